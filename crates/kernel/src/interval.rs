@@ -1,0 +1,122 @@
+//! Intervals: the domains of curves and surfaces, and ranges of numbers.
+
+use crate::{Error, Result};
+
+/// A closed interval of real numbers from `t0` to `t1`, which may be increasing or decreasing
+/// (Grasshopper's *domain*).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Interval {
+    /// The start of the interval.
+    pub t0: f64,
+    /// The end of the interval.
+    pub t1: f64,
+}
+
+impl Interval {
+    /// The unit interval 0 to 1.
+    pub const UNIT: Self = Self::new(0.0, 1.0);
+
+    /// Creates an interval from its two ends, in the given order.
+    #[inline]
+    pub const fn new(t0: f64, t1: f64) -> Self {
+        Self { t0, t1 }
+    }
+
+    /// The signed length `t1 − t0` (negative for a decreasing interval).
+    #[inline]
+    pub fn length(self) -> f64 {
+        self.t1 - self.t0
+    }
+
+    /// The smaller end.
+    #[inline]
+    pub fn min(self) -> f64 {
+        self.t0.min(self.t1)
+    }
+
+    /// The larger end.
+    #[inline]
+    pub fn max(self) -> f64 {
+        self.t0.max(self.t1)
+    }
+
+    /// The value in the middle.
+    #[inline]
+    pub fn mid(self) -> f64 {
+        0.5 * (self.t0 + self.t1)
+    }
+
+    /// Whether `t1 > t0`.
+    #[inline]
+    pub fn is_increasing(self) -> bool {
+        self.t1 > self.t0
+    }
+
+    /// Whether `t1 < t0`.
+    #[inline]
+    pub fn is_decreasing(self) -> bool {
+        self.t1 < self.t0
+    }
+
+    /// Whether both ends are finite.
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.t0.is_finite() && self.t1.is_finite()
+    }
+
+    /// The actual parameter at the normalized parameter `s`: `t0 + s (t1 − t0)`.
+    #[inline]
+    pub fn parameter_at(self, s: f64) -> f64 {
+        // Written so that s = 0 and s = 1 give the ends exactly.
+        (1.0 - s) * self.t0 + s * self.t1
+    }
+
+    /// The normalized parameter of `t`: 0 at `t0`, 1 at `t1`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when the interval has zero length.
+    pub fn normalized_parameter_at(self, t: f64) -> Result<f64> {
+        let len = self.length();
+        if len == 0.0 || !len.is_finite() {
+            return Err(Error::InvalidInput(format!(
+                "interval {} to {} has zero length",
+                self.t0, self.t1
+            )));
+        }
+        Ok((t - self.t0) / len)
+    }
+
+    /// Whether `t` lies in the interval (ends included), whatever its direction.
+    #[inline]
+    pub fn contains(self, t: f64) -> bool {
+        t >= self.min() && t <= self.max()
+    }
+
+    /// The same interval with its ends swapped.
+    #[inline]
+    pub fn reversed(self) -> Self {
+        Self::new(self.t1, self.t0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalized_round_trip_on_decreasing_domain() {
+        let d = Interval::new(10.0, 2.0);
+        assert_eq!(d.parameter_at(0.0), 10.0);
+        assert_eq!(d.parameter_at(1.0), 2.0);
+        assert_eq!(d.normalized_parameter_at(4.0).unwrap(), 0.75);
+    }
+
+    #[test]
+    fn zero_length_has_no_normalized_parameter() {
+        assert!(
+            Interval::new(3.0, 3.0)
+                .normalized_parameter_at(3.0)
+                .is_err()
+        );
+    }
+}

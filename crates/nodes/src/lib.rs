@@ -1,0 +1,1 @@
+//! The node library of locus.

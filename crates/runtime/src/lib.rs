@@ -1,0 +1,1 @@
+//! The node runtime of locus: data trees, typed ports, Grasshopper matching and evaluation.
