@@ -19,6 +19,7 @@
 //! assert_eq!(Vector3::new(4.0, 3.0, 0.0).length(), 5.0);
 //! ```
 
+pub mod basis;
 mod error;
 mod interval;
 mod plane;
