@@ -8,6 +8,19 @@ use crate::{Error, Interval, OrientedBox, Point3, Result, Transform, Vector3};
 /// [`BoundingBox::EMPTY`] has `min = +∞` and `max = −∞`, so that the union of the empty box
 /// with anything is that thing. Measures of an empty box (centre, diagonal, corners) are not
 /// finite; check [`is_empty`](Self::is_empty) or [`is_valid`](Self::is_valid) first.
+///
+/// # Examples
+/// ```
+/// use locus_kernel::{BoundingBox, Point3, Transform};
+/// # fn main() -> locus_kernel::Result<()> {
+/// let bbox = BoundingBox::from_points(&[Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 2.0, 3.0)])?;
+/// assert_eq!(bbox.center(), Point3::new(0.5, 1.0, 1.5));
+/// assert_eq!(bbox.corners()[6], bbox.max);
+/// let turned = bbox.transformed(&Transform::rotation_z(std::f64::consts::FRAC_PI_2));
+/// assert_eq!(turned.min, Point3::new(-2.0, 0.0, 0.0));
+/// # Ok(())
+/// # }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BoundingBox {
     /// The corner with the smallest coordinates.
@@ -30,7 +43,8 @@ impl BoundingBox {
     };
 
     /// The box with two opposite corners `a` and `b`, in any order (the minimum and maximum
-    /// are taken coordinate by coordinate).
+    /// are taken coordinate by coordinate; a NaN coordinate gives way to the other corner's,
+    /// as in [`include_point`](Self::include_point)).
     #[inline]
     pub fn new(a: Point3, b: Point3) -> Self {
         Self {

@@ -38,6 +38,25 @@ use crate::{BoundingBox, OrientedBox, Plane, Point3, Result, Vector3};
 /// return the matrix directly, and a NaN or infinite input shows as a non-finite matrix
 /// ([`Transform::is_finite`]); constructors with geometric failure modes (a zero axis, a zero
 /// normal) return a [`Result`] and also report non-finite input.
+///
+/// # Examples
+/// The book's multiple-transformations tutorial: move the centre to the origin, rotate 45°
+/// about z, scale by 0.2, move back, as one master matrix.
+/// ```
+/// use locus_kernel::{Point3, Transform, Vector3};
+/// # fn main() -> locus_kernel::Result<()> {
+/// let centre = Point3::new(3.0, 4.0, 5.0);
+/// let m1 = Transform::translation(Point3::ORIGIN - centre);
+/// let m2 = Transform::rotation(45f64.to_radians(), Vector3::Z, Point3::ORIGIN)?;
+/// let m3 = Transform::scale(Point3::ORIGIN, 0.2);
+/// let m4 = m1.inverse()?;
+/// let master = m4 * m3 * m2 * m1;
+/// assert!(master.transform_point(centre).abs_diff_eq(centre, 1e-15));
+/// let rows = master.to_rows();
+/// assert!((rows[0][3] - 3.14142135623731).abs() < 1e-14);
+/// # Ok(())
+/// # }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform {
     /// The matrix.

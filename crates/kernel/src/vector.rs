@@ -25,6 +25,18 @@ use crate::{Error, Result};
 /// A vector is *zero* for the kernel when its length is at most
 /// [`ZERO_TOLERANCE`]; operations that need a direction ([`unitize`](Self::unitize),
 /// [`angle_to`](Self::angle_to), ...) report such vectors as [`Error::ZeroLength`].
+///
+/// # Examples
+/// ```
+/// use locus_kernel::{Parallelism, Vector3};
+/// let a = Vector3::new(3.0, 1.0, 0.0);
+/// let b = Vector3::new(1.0, 2.0, 0.0);
+/// assert_eq!(a.cross(b), Vector3::new(0.0, 0.0, 5.0));
+/// let quarter = Vector3::X.signed_angle_to(Vector3::Y, Vector3::Z).unwrap();
+/// assert!((quarter - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+/// assert_eq!(a.parallelism(a * -2.0, 1e-12), Parallelism::Antiparallel);
+/// assert!(Vector3::ZERO.unitize().is_err());
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Vector3 {
     /// The x component.

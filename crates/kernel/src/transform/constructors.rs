@@ -257,9 +257,11 @@ impl Transform {
     /// that `from.point_at(a, b, c) == to.point_at(a′, b′, c′)`. With `from` the world XY plane
     /// it turns world coordinates into `to`'s coordinates.
     ///
-    /// This is not [`plane_to_plane`](Self::plane_to_plane), which moves geometry; it is the
-    /// inverse of `plane_to_plane(to, from)` composed with nothing else, and it is exact for
-    /// our orthonormal planes.
+    /// This is not [`plane_to_plane`](Self::plane_to_plane), which moves geometry: with
+    /// `F(p) = plane_to_plane(&Plane::WORLD_XY, p)` the map from a plane's coordinates to world
+    /// coordinates, `change_basis(from, to)` is `F(to)⁻¹ · F(from)` while
+    /// `plane_to_plane(from, to)` is `F(to) · F(from)⁻¹`. Rhino solves for arbitrary bases;
+    /// for our orthonormal planes `F(to)⁻¹` is its transpose, which is what is used here.
     pub fn change_basis(from: &Plane, to: &Plane) -> Self {
         let from_frame = Self::from_linear_translation(
             DMat3::from_cols(
@@ -590,5 +592,9 @@ pub(super) mod tests {
                 .transform_point(q)
                 .abs_diff_eq(Point3::new(u, v, w), 1e-14)
         );
+        let frame = |p: &Plane| Transform::plane_to_plane(&Plane::WORLD_XY, p);
+        let composed = frame(&to).inverse().unwrap() * frame(&from);
+        let diff = (basis.matrix - composed.matrix).to_cols_array();
+        assert!(diff.iter().all(|d| d.abs() < 1e-14), "{diff:?}");
     }
 }
