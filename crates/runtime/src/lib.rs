@@ -3,10 +3,28 @@
 //! The runtime names no concrete node: node types are registered by the node library (or by a
 //! host) in a `NodeRegistry` value.
 
+mod cast;
+mod graph;
+mod node;
 mod path;
+mod plan;
+mod registry;
+mod solve;
 mod tree;
 mod value;
 
+pub use crate::cast::can_cast;
+pub use crate::graph::{
+    FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
+    Wire,
+};
+pub use crate::node::{
+    Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
+    VariableInputs,
+};
 pub use crate::path::{PathParseError, TreePath};
+pub use crate::plan::{Plan, PlanInput, PlanNode};
+pub use crate::registry::NodeRegistry;
+pub use crate::solve::Solve;
 pub use crate::tree::{Branch, DataTree};
 pub use crate::value::{Column, DataType, Item, Shared, Value};
