@@ -16,7 +16,7 @@
 //!         Ok(())
 //!     });
 //! assert_eq!(dot.inputs.len(), 2);
-//! ```ignore
+//! ```
 
 use std::any::Any;
 use std::fmt;
