@@ -5,6 +5,8 @@
 
 mod cast;
 mod graph;
+mod iterate;
+mod message;
 mod node;
 mod path;
 mod plan;
@@ -18,6 +20,7 @@ pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
 };
+pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
     VariableInputs,
@@ -25,6 +28,6 @@ pub use crate::node::{
 pub use crate::path::{PathParseError, TreePath};
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
-pub use crate::solve::Solve;
+pub use crate::solve::{ListView, Solve};
 pub use crate::tree::{Branch, DataTree};
 pub use crate::value::{Column, DataType, Item, Shared, Value};
