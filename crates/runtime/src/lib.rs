@@ -4,6 +4,8 @@
 //! host) in a `NodeRegistry` value.
 
 mod cast;
+mod collect;
+mod evaluator;
 mod graph;
 mod iterate;
 mod message;
@@ -16,6 +18,7 @@ mod tree;
 mod value;
 
 pub use crate::cast::can_cast;
+pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
