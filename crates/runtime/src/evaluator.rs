@@ -191,10 +191,10 @@ impl Evaluator {
 
     /// Removes a value given with [`set_input`](Self::set_input), going back to the graph's.
     pub fn clear_input(&mut self, name: &str) {
-        if let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name) {
-            if self.overrides[k].take().is_some() {
-                self.mark_dirty(self.plan.inputs[k].1);
-            }
+        if let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name)
+            && self.overrides[k].take().is_some()
+        {
+            self.mark_dirty(self.plan.inputs[k].1);
         }
     }
 
@@ -376,10 +376,9 @@ impl Evaluator {
             .inputs
             .iter()
             .position(|&(_, node, port)| node == i && port == k)
+            && let Some(tree) = &self.overrides[slot]
         {
-            if let Some(tree) = &self.overrides[slot] {
-                return Some(Cow::Borrowed(tree));
-            }
+            return Some(Cow::Borrowed(tree));
         }
         match input.sources.as_slice() {
             [] => input.value.as_ref().map(Cow::Borrowed),

@@ -385,10 +385,8 @@ fn run_task(
             if !sink.set {
                 match sink.access {
                     Access::Item => {
-                        if !empty_gap {
-                            if let Some((_, b)) = sink.pieces.last_mut() {
-                                b.push_null();
-                            }
+                        if !empty_gap && let Some((_, b)) = sink.pieces.last_mut() {
+                            b.push_null();
                         }
                     }
                     Access::List => {
