@@ -414,6 +414,14 @@ impl Evaluator {
         Some(&self.states[i].outputs[k])
     }
 
+    /// The data of output `output` of the node at index `node` of the plan.
+    ///
+    /// # Panics
+    /// When the indices are out of range.
+    pub fn node_output_at(&self, node: usize, output: usize) -> &DataTree {
+        &self.states[node].outputs[output]
+    }
+
     /// Every runtime message of the last evaluation (kept for nodes that did not re-run), in
     /// the graph's node order.
     pub fn messages(&self) -> impl Iterator<Item = &Message> {

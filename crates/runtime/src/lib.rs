@@ -3,6 +3,7 @@
 //! The runtime names no concrete node: node types are registered by the node library (or by a
 //! host) in a `NodeRegistry` value.
 
+mod call;
 mod cast;
 mod collect;
 mod evaluator;
@@ -17,6 +18,7 @@ mod solve;
 mod tree;
 mod value;
 
+pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::cast::can_cast;
 pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::graph::{

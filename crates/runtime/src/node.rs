@@ -2,7 +2,7 @@
 //!
 //! A node type is declared once, with a builder:
 //!
-//! ```ignore
+//! ```
 //! use locus_runtime::{Access, DataType, NodeType, Port};
 //! let dot = NodeType::new("vector.dot_product", "Dot Product", "DProd", "Vector")
 //!     .description("Computes the dot product of two vectors.")
