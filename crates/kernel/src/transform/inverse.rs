@@ -203,6 +203,17 @@ mod tests {
     }
 
     #[test]
+    fn large_translations_are_invertible() {
+        // Regression: a determinant threshold relative to the largest entry to the fourth power
+        // called every translation by 1000 or more singular.
+        for d in [1e3, 1e9, 1e15] {
+            let t = Transform::translation(Vector3::new(d, -d, 0.5 * d));
+            let inv = t.inverse().unwrap();
+            assert_eq!(inv, Transform::translation(Vector3::new(-d, d, -0.5 * d)));
+        }
+    }
+
+    #[test]
     fn singular_transforms_have_no_inverse() {
         let plane =
             Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, 1.0, 1.0)).unwrap();
