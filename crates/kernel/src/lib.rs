@@ -22,6 +22,7 @@
 pub mod basis;
 mod error;
 mod interval;
+mod nurbs_curve;
 mod plane;
 mod point;
 pub mod tolerance;
@@ -30,6 +31,7 @@ mod vector;
 
 pub use crate::error::{Error, Result};
 pub use crate::interval::Interval;
+pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
 pub use crate::transform::Transform;
