@@ -23,6 +23,7 @@ pub mod basis;
 mod error;
 mod interval;
 mod nurbs_curve;
+mod nurbs_curve_batch;
 mod plane;
 mod point;
 pub mod tolerance;
