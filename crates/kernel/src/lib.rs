@@ -24,6 +24,7 @@ mod error;
 mod interval;
 mod nurbs_curve;
 mod nurbs_curve_batch;
+mod nurbs_curve_edit;
 mod plane;
 mod point;
 pub mod tolerance;

@@ -76,7 +76,6 @@ impl NurbsCurve {
     }
 
     /// Assembles a curve from parts that the caller guarantees to be valid.
-    #[allow(dead_code, reason = "used by the constructions that follow")]
     pub(crate) fn from_parts_unchecked(
         degree: usize,
         points: Vec<Point3>,
