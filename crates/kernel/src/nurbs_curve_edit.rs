@@ -136,7 +136,7 @@ impl NurbsCurve {
     /// [`Error::InvalidInput`] when the interval is not increasing or not inside the domain.
     pub fn trim(&self, interval: Interval) -> Result<Self> {
         let d = self.domain();
-        if !interval.is_finite() || !(interval.t0 < interval.t1) {
+        if !interval.is_finite() || interval.t0 >= interval.t1 {
             return Err(Error::InvalidInput(format!(
                 "trim interval {} to {} is not increasing",
                 interval.t0, interval.t1
@@ -164,7 +164,7 @@ impl NurbsCurve {
     /// # Errors
     /// [`Error::InvalidInput`] when `domain` is not finite and increasing.
     pub fn reparameterized(&self, domain: Interval) -> Result<Self> {
-        if !domain.is_finite() || !(domain.t0 < domain.t1) {
+        if !domain.is_finite() || domain.t0 >= domain.t1 {
             return Err(Error::InvalidInput(format!(
                 "domain {} to {} is not increasing",
                 domain.t0, domain.t1
