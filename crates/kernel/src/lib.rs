@@ -21,9 +21,11 @@
 
 pub mod basis;
 mod error;
+mod interpolate;
 mod interval;
 mod nurbs_curve;
 mod nurbs_curve_batch;
+mod nurbs_curve_create;
 mod nurbs_curve_edit;
 mod plane;
 mod point;
@@ -32,6 +34,7 @@ mod transform;
 mod vector;
 
 pub use crate::error::{Error, Result};
+pub use crate::interpolate::{EndTangents, KnotStyle};
 pub use crate::interval::Interval;
 pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::plane::{Plane, perpendicular_to};
