@@ -79,7 +79,7 @@ impl NurbsCurve {
                 got: n,
             });
         }
-        if degree % 2 == 0 || degree > basis::MAX_DEGREE {
+        if degree.is_multiple_of(2) || degree > basis::MAX_DEGREE {
             return Err(Error::InvalidDegree {
                 degree,
                 reason: "interpolation needs an odd degree no higher than the maximum".into(),
