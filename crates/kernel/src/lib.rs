@@ -19,25 +19,33 @@
 //! assert_eq!(Vector3::new(4.0, 3.0, 0.0).length(), 5.0);
 //! ```
 
+mod arc;
 pub mod basis;
+mod circle;
 mod error;
 mod interpolate;
 mod interval;
+mod line;
 mod nurbs_curve;
 mod nurbs_curve_batch;
 mod nurbs_curve_create;
 mod nurbs_curve_edit;
 mod plane;
 mod point;
+mod polyline;
 pub mod tolerance;
 mod transform;
 mod vector;
 
+pub use crate::arc::Arc;
+pub use crate::circle::Circle;
 pub use crate::error::{Error, Result};
 pub use crate::interpolate::{EndTangents, KnotStyle};
 pub use crate::interval::Interval;
+pub use crate::line::Line;
 pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
+pub use crate::polyline::Polyline;
 pub use crate::transform::Transform;
 pub use crate::vector::Vector3;
