@@ -160,7 +160,7 @@ mod tests {
         assert!(p.is_closed());
         assert_eq!(p.point_at(1.5), Point3::new(10.0, 5.0, 0.0));
         assert_eq!(p.point_at(4.0), Point3::new(0.0, 0.0, 0.0));
-        assert_eq!(p.point_at(f64::NAN).x.is_nan(), true);
+        assert!(p.point_at(f64::NAN).x.is_nan());
         assert_eq!(p.closest_parameter(Point3::new(12.0, 3.0, 0.0)), 1.3);
         let n = p.to_nurbs();
         for i in 0..=40 {
