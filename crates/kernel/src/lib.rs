@@ -21,8 +21,10 @@
 
 mod arc;
 pub mod basis;
+mod bezier;
 mod circle;
 mod error;
+mod hermite;
 mod interpolate;
 mod interval;
 mod line;
@@ -38,8 +40,10 @@ mod transform;
 mod vector;
 
 pub use crate::arc::Arc;
+pub use crate::bezier::Bezier;
 pub use crate::circle::Circle;
 pub use crate::error::{Error, Result};
+pub use crate::hermite::CubicHermite;
 pub use crate::interpolate::{EndTangents, KnotStyle};
 pub use crate::interval::Interval;
 pub use crate::line::Line;
