@@ -20,9 +20,11 @@
 //! ```
 
 mod arc;
+mod arc_length;
 pub mod basis;
 mod bezier;
 mod circle;
+mod curve_closest_point;
 mod error;
 mod hermite;
 mod interpolate;
@@ -42,6 +44,7 @@ mod vector;
 pub use crate::arc::Arc;
 pub use crate::bezier::Bezier;
 pub use crate::circle::Circle;
+pub use crate::curve_closest_point::CurveClosestPoint;
 pub use crate::error::{Error, Result};
 pub use crate::hermite::CubicHermite;
 pub use crate::interpolate::{EndTangents, KnotStyle};

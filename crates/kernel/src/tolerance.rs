@@ -15,3 +15,10 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 /// The default angle tolerance in radians for parallel, perpendicular and continuity tests:
 /// 1e-9 rad.
 pub const ANGLE_TOLERANCE: f64 = 1e-9;
+
+/// The default relative tolerance of arc lengths: adaptive quadrature stops when its error
+/// estimate is below 1e-12 of the curve's length.
+pub const LENGTH_TOLERANCE: f64 = 1e-12;
+
+/// The default relative tolerance between curvature magnitudes for G2 continuity: 1e-9.
+pub const CURVATURE_TOLERANCE: f64 = 1e-9;
