@@ -24,6 +24,7 @@ mod arc_length;
 pub mod basis;
 mod bezier;
 mod circle;
+mod continuity;
 mod curve;
 mod curve_closest_point;
 mod curve_measure;
@@ -46,6 +47,9 @@ mod vector;
 pub use crate::arc::Arc;
 pub use crate::bezier::Bezier;
 pub use crate::circle::Circle;
+pub use crate::continuity::{
+    Continuity, ContinuityTolerances, continuity, continuity_with_tolerances,
+};
 pub use crate::curve::Curve;
 pub use crate::curve_closest_point::CurveClosestPoint;
 pub use crate::error::{Error, Result};
