@@ -38,3 +38,9 @@ pub const SQRT_EPSILON: f64 = 1.490_116_119_385e-8;
 /// significant digits, so the transform is reported as singular instead. For affine transforms
 /// only the 3×3 linear part is measured, so translations, however large, never count.
 pub const SINGULAR_TOLERANCE: f64 = 1e-12;
+/// The default relative tolerance of arc lengths: adaptive quadrature stops when its error
+/// estimate is below 1e-12 of the curve's length.
+pub const LENGTH_TOLERANCE: f64 = 1e-12;
+
+/// The default relative tolerance between curvature magnitudes for G2 continuity: 1e-9.
+pub const CURVATURE_TOLERANCE: f64 = 1e-9;
