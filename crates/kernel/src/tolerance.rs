@@ -15,3 +15,8 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 /// The default angle tolerance in radians for parallel, perpendicular and continuity tests:
 /// 1e-9 rad.
 pub const ANGLE_TOLERANCE: f64 = 1e-9;
+
+/// The relative size below which one partial derivative of a surface counts as negligible
+/// beside the other, so that the normal must be found as a limit: √ε ≈ 1.49e-8, openNURBS's
+/// `ON_SQRT_EPSILON`.
+pub const SQRT_EPSILON: f64 = 1.490_116_119_385e-8;
