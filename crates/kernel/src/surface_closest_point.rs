@@ -105,10 +105,10 @@ impl NurbsSurface {
         // Lower bounds of the distance to each patch.
         let (nu, nv) = (breaks_u.len() - 1, breaks_v.len() - 1);
         let mut bounds = Vec::with_capacity(nu * nv);
-        for a in 0..nu {
-            let su = span_index(self.degree_u(), self.knots_u(), breaks_u[a]);
-            for b in 0..nv {
-                let sv = span_index(self.degree_v(), self.knots_v(), breaks_v[b]);
+        for &start_u in &breaks_u[..nu] {
+            let su = span_index(self.degree_u(), self.knots_u(), start_u);
+            for &start_v in &breaks_v[..nv] {
+                let sv = span_index(self.degree_v(), self.knots_v(), start_v);
                 bounds.push(box_distance_squared(self.span_points(su, sv), test));
             }
         }
@@ -476,12 +476,8 @@ fn step_1d(g: f64, h: f64, gn: f64) -> f64 {
 fn step_2d(g: [f64; 2], [huu, huv, hvv]: [f64; 3], [e, f, gg]: [f64; 3]) -> (f64, f64) {
     let solve = |a: f64, b: f64, c: f64| {
         let det = a * c - b * b;
-        (a > 0.0 && det > 1e-14 * a * c).then(|| {
-            (
-                -(c * g[0] - b * g[1]) / det,
-                -(a * g[1] - b * g[0]) / det,
-            )
-        })
+        (a > 0.0 && det > 1e-14 * a * c)
+            .then(|| (-(c * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det))
     };
     solve(huu, huv, hvv)
         .or_else(|| solve(e, f, gg))

@@ -53,7 +53,7 @@ impl SurfaceCurvature {
         let [l, m, n] = d.second_fundamental_form(normal);
         // EG − F² = |Su × Sv|², computed without cancellation.
         let det = d.du.cross(d.dv).length_squared();
-        if !(det > 0.0) {
+        if det.is_nan() || det <= 0.0 {
             return Err(Error::Degenerate {
                 what: "surface at the curvature point",
             });
@@ -112,7 +112,7 @@ fn principal_direction(
     k2: f64,
 ) -> Option<Vector3> {
     let spread = k1 - k2;
-    if !(spread > 1e-12 * 1f64.max(k1.abs()).max(k2.abs())) {
+    if spread.is_nan() || spread <= 1e-12 * 1f64.max(k1.abs()).max(k2.abs()) {
         return None;
     }
     // (II − k I) w = 0: each row gives a direction perpendicular to it in (du, dv); take the

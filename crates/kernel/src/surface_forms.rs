@@ -195,7 +195,6 @@ impl Sphere {
         }
         let knots_v = vec![-FRAC_PI_2, -FRAC_PI_2, 0.0, 0.0, FRAC_PI_2, FRAC_PI_2];
         NurbsSurface::from_flat([2, 2], [9, 5], points, weights, [circle_knots(), knots_v])
-            
     }
 }
 
@@ -403,6 +402,5 @@ impl Cone {
             vec![self.height, 0.0]
         };
         NurbsSurface::from_flat([2, 1], [9, 2], points, weights, [circle_knots(), knots_v])
-            
     }
 }

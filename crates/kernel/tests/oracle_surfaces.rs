@@ -122,7 +122,13 @@ fn opennurbs_surface_points_and_normals() {
         failures.check(
             surface.domain_u() == Interval::new(u0, u1)
                 && surface.domain_v() == Interval::new(v0, v1),
-            || format!("{case_name}: domains {:?} {:?}", surface.domain_u(), surface.domain_v()),
+            || {
+                format!(
+                    "{case_name}: domains {:?} {:?}",
+                    surface.domain_u(),
+                    surface.domain_v()
+                )
+            },
         );
         for sample in case["samples"].as_array().expect("samples") {
             let (u, v) = (num(&sample["u"]), num(&sample["v"]));
@@ -131,7 +137,12 @@ fn opennurbs_surface_points_and_normals() {
             failures.check(
                 p.as_ref()
                     .is_ok_and(|p| close3(*p, triple(&sample["point"]), REL)),
-                || format!("{case_name} at ({u}, {v}): point {p:?}, expected {}", sample["point"]),
+                || {
+                    format!(
+                        "{case_name} at ({u}, {v}): point {p:?}, expected {}",
+                        sample["point"]
+                    )
+                },
             );
             let n = surface.normal_at(u, v).map(Vector3::to_array);
             failures.check(
@@ -162,7 +173,9 @@ fn surface_forms_match_rhinos() {
         let theirs = match surface_from(case) {
             Ok(s) => s,
             Err(e) => {
-                failures.0.push(format!("{label}: reference does not build: {e}"));
+                failures
+                    .0
+                    .push(format!("{label}: reference does not build: {e}"));
                 return;
             }
         };
@@ -264,10 +277,7 @@ fn occt_surface_closest_points() {
         let surface = &surfaces[surface_name];
         let (du, dv) = (surface.domain_u(), surface.domain_v());
         for query in case["queries"].as_array().expect("queries") {
-            let label = format!(
-                "{surface_name} / {}",
-                query["kind"].as_str().unwrap_or("?")
-            );
+            let label = format!("{surface_name} / {}", query["kind"].as_str().unwrap_or("?"));
             total += 1;
             let test = point(&query["test_point"]);
             let cp = match surface.closest_point(test) {
