@@ -323,20 +323,22 @@ impl NurbsSurface {
             && self.points.iter().all(|p| p.is_finite())
     }
 
-    /// The point at `(u, v)`.
-    ///
-    /// Parameters outside the domain extrapolate the polynomial of the nearest span.
+    /// The point at `(u, v)`, or an error if a parameter is not finite.
     ///
     /// # Errors
     /// [`Error::NotFinite`] if `u` or `v` is NaN or infinite.
     #[inline]
-    pub fn point_at(&self, u: f64, v: f64) -> Result<Point3> {
+    pub fn try_point_at(&self, u: f64, v: f64) -> Result<Point3> {
         check_parameters(u, v)?;
-        Ok(self.point_at_unchecked(u, v))
+        Ok(self.point_at(u, v))
     }
 
-    /// The point at `(u, v)` without checking the parameters (NaN in, NaN out).
-    pub(crate) fn point_at_unchecked(&self, u: f64, v: f64) -> Point3 {
+    /// The point at `(u, v)`.
+    ///
+    /// Parameters outside the domain extrapolate the polynomial of the nearest span, as Rhino
+    /// does. A NaN parameter gives a NaN point (use [`try_point_at`](Self::try_point_at) to
+    /// have it reported).
+    pub fn point_at(&self, u: f64, v: f64) -> Point3 {
         let (p, q) = (self.degree_u, self.degree_v);
         let su = span_index(p, &self.knots_u, u);
         let sv = span_index(q, &self.knots_v, v);
@@ -486,7 +488,7 @@ impl NurbsSurface {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] unless both intervals are finite and increasing.
-    pub fn with_domain(&self, u: Interval, v: Interval) -> Result<Self> {
+    pub fn reparameterized(&self, u: Interval, v: Interval) -> Result<Self> {
         for (name, d) in [("u", u), ("v", v)] {
             if !d.is_finite() || !d.is_increasing() {
                 return Err(Error::InvalidInput(format!(
@@ -638,12 +640,12 @@ impl NurbsSurface {
             let t = other.parameter_at(k as f64 / samples as f64);
             let (a, b) = match direction {
                 SurfaceDirection::U => (
-                    self.point_at_unchecked(d.t0, t),
-                    self.point_at_unchecked(d.t1, t),
+                    self.point_at(d.t0, t),
+                    self.point_at(d.t1, t),
                 ),
                 SurfaceDirection::V => (
-                    self.point_at_unchecked(t, d.t0),
-                    self.point_at_unchecked(t, d.t1),
+                    self.point_at(t, d.t0),
+                    self.point_at(t, d.t1),
                 ),
             };
             a.distance(b) <= tolerance

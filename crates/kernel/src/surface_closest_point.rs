@@ -97,7 +97,7 @@ impl NurbsSurface {
         };
         for u in [du.t0, du.t1] {
             for v in [dv.t0, dv.t1] {
-                let p = self.point_at_unchecked(u, v);
+                let p = self.point_at(u, v);
                 best.offer(u, v, p, p.distance_squared(test));
             }
         }
@@ -213,7 +213,7 @@ impl NurbsSurface {
         };
         for u in u_range {
             for v in v_range {
-                let p = self.point_at_unchecked(u, v);
+                let p = self.point_at(u, v);
                 best.offer(u, v, p, p.distance_squared(test));
             }
         }
@@ -257,7 +257,7 @@ impl NurbsSurface {
             let u = param(rect.u, i, nu);
             for j in 0..nv {
                 let v = param(rect.v, j, nv);
-                grid[i * nv + j] = self.point_at_unchecked(u, v).distance_squared(test);
+                grid[i * nv + j] = self.point_at(u, v).distance_squared(test);
             }
         }
         let mut starts: Vec<(f64, usize, usize)> = Vec::new();
@@ -331,7 +331,7 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nu = (u + alpha * su).clamp(rect.u[0], rect.u[1]);
                 let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
-                let p = self.point_at_unchecked(nu, nv);
+                let p = self.point_at(nu, nv);
                 let nf = p.distance_squared(test);
                 if nf <= f {
                     accepted = Some((nu, nv, nf));
@@ -378,7 +378,7 @@ impl NurbsSurface {
         let samples = samples.min(values.len());
         for (k, value) in values[..samples].iter_mut().enumerate() {
             let (u, v) = uv(param(k));
-            *value = self.point_at_unchecked(u, v).distance_squared(test);
+            *value = self.point_at(u, v).distance_squared(test);
         }
         let mut starts: Vec<(f64, usize)> = (0..samples)
             .filter(|&k| {
@@ -430,7 +430,7 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nt = (t + alpha * s).clamp(range[0], range[1]);
                 let (u, v) = uv(nt);
-                if self.point_at_unchecked(u, v).distance_squared(test) <= f {
+                if self.point_at(u, v).distance_squared(test) <= f {
                     accepted = Some(nt);
                     break;
                 }
