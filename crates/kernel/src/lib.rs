@@ -19,15 +19,23 @@
 //! assert_eq!(Vector3::new(4.0, 3.0, 0.0).length(), 5.0);
 //! ```
 
+mod arc;
 pub mod basis;
+mod bezier;
+mod circle;
 mod error;
+mod hermite;
+mod interpolate;
 mod interval;
+mod line;
 mod nurbs_curve;
 mod nurbs_curve_batch;
+mod nurbs_curve_create;
 mod nurbs_curve_edit;
 mod nurbs_surface;
 mod plane;
 mod point;
+mod polyline;
 mod surface_closest_point;
 mod surface_curvature;
 mod surface_derivatives;
@@ -39,12 +47,19 @@ pub mod tolerance;
 mod transform;
 mod vector;
 
+pub use crate::arc::Arc;
+pub use crate::bezier::Bezier;
+pub use crate::circle::Circle;
 pub use crate::error::{Error, Result};
+pub use crate::hermite::CubicHermite;
+pub use crate::interpolate::{EndTangents, KnotStyle};
 pub use crate::interval::Interval;
+pub use crate::line::Line;
 pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::nurbs_surface::NurbsSurface;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
+pub use crate::polyline::Polyline;
 pub use crate::surface_closest_point::SurfaceClosestPoint;
 pub use crate::surface_curvature::SurfaceCurvature;
 pub use crate::surface_derivatives::SurfaceDerivatives;

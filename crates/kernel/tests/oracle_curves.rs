@@ -111,3 +111,66 @@ fn opennurbs_curves() {
     }
     failures.finish("opennurbs curve");
 }
+
+#[test]
+fn opennurbs_constructions() {
+    let oracle = load_oracle("opennurbs-cases.json");
+    let cases = oracle["constructions"].as_array().expect("constructions");
+    assert!(cases.len() >= 6);
+    let mut failures = Failures::default();
+    for case in cases {
+        let name = case["name"].as_str().expect("name");
+        // The case records the built curve's periodicity; the call's flag is in the name
+        // (Rhino returns a closed, non-periodic polyline for a periodic request of degree 1).
+        let requested_periodic = name.starts_with("create-periodic");
+        let degree = case["degree"].as_u64().expect("degree") as usize;
+        let input: Vec<Point3> = case["input_points"]
+            .as_array()
+            .expect("input_points")
+            .iter()
+            .map(point)
+            .collect();
+        let curve = match NurbsCurve::create(&input, degree, requested_periodic) {
+            Ok(c) => c,
+            Err(e) => {
+                failures.push(format!("{name}: create failed: {e}"));
+                continue;
+            }
+        };
+        let expected = curve_from(case);
+        failures.check(curve.point_count() == expected.point_count(), || {
+            format!(
+                "{name}: {} control points, expected {}",
+                curve.point_count(),
+                expected.point_count()
+            )
+        });
+        failures.check(curve.knots() == expected.knots(), || {
+            format!(
+                "{name}: knots {:?}, expected {:?}",
+                curve.knots(),
+                expected.knots()
+            )
+        });
+        for (i, (a, b)) in curve.points().iter().zip(expected.points()).enumerate() {
+            failures.check(close3(arr(*a), arr(*b), REL), || {
+                format!("{name}: control point {i} {a:?}, expected {b:?}")
+            });
+        }
+        failures.check(curve.weights() == expected.weights(), || {
+            format!("{name}: weights {:?}", curve.weights())
+        });
+        let periodic = case["periodic"].as_bool().expect("periodic");
+        failures.check(curve.is_periodic() == periodic, || {
+            format!(
+                "{name}: is_periodic {}, expected {periodic}",
+                curve.is_periodic()
+            )
+        });
+        failures.check(curve.is_closed() == requested_periodic, || {
+            format!("{name}: is_closed {}", curve.is_closed())
+        });
+        check_samples(name, &curve, case, &mut failures);
+    }
+    failures.finish("opennurbs construction");
+}
