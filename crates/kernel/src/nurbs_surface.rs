@@ -11,9 +11,8 @@
 use crate::basis::{
     MAX_DEGREE, MAX_ORDER, basis_function_derivatives, basis_functions, span_index,
 };
-use crate::surface_direction::{SurfaceDirection, SurfaceSide};
-use crate::tolerance::ZERO_TOLERANCE;
-use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Transform, Vector3};
+use crate::surface_direction::SurfaceDirection;
+use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 
 /// A non-uniform rational B-spline surface with knots in Rhino form.
 ///
@@ -25,18 +24,18 @@ use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Transform, Vect
 /// Instances are always valid: every constructor checks degrees, counts, knots and weights.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
-    degree_u: usize,
-    degree_v: usize,
-    count_u: usize,
-    count_v: usize,
+    pub(crate) degree_u: usize,
+    pub(crate) degree_v: usize,
+    pub(crate) count_u: usize,
+    pub(crate) count_v: usize,
     /// Euclidean control points, `i · count_v + j`.
-    points: Vec<Point3>,
+    pub(crate) points: Vec<Point3>,
     /// Weights, parallel to `points`.
-    weights: Vec<f64>,
-    knots_u: Vec<f64>,
-    knots_v: Vec<f64>,
+    pub(crate) weights: Vec<f64>,
+    pub(crate) knots_u: Vec<f64>,
+    pub(crate) knots_v: Vec<f64>,
     /// Whether any weight differs from 1.
-    rational: bool,
+    pub(crate) rational: bool,
 }
 
 impl NurbsSurface {
@@ -483,175 +482,6 @@ impl NurbsSurface {
         }
     }
 
-    /// The same surface with its domains changed to `u` and `v` by a linear map of the knots.
-    /// Every point keeps its place: `S'(u', v') = S(u, v)` for corresponding parameters.
-    ///
-    /// # Errors
-    /// [`Error::InvalidInput`] unless both intervals are finite and increasing.
-    pub fn reparameterized(&self, u: Interval, v: Interval) -> Result<Self> {
-        for (name, d) in [("u", u), ("v", v)] {
-            if !d.is_finite() || !d.is_increasing() {
-                return Err(Error::InvalidInput(format!(
-                    "the new {name} domain {} to {} must be finite and increasing",
-                    d.t0, d.t1
-                )));
-            }
-        }
-        let mut out = self.clone();
-        out.knots_u = remap_knots(&self.knots_u, self.domain_u(), u);
-        out.knots_v = remap_knots(&self.knots_v, self.domain_v(), v);
-        Ok(out)
-    }
-
-    /// The same surface reparameterized to the unit square (Grasshopper's Reparameterize).
-    pub fn normalized(&self) -> Self {
-        // The unit intervals are valid, so this cannot fail.
-        let mut out = self.clone();
-        out.knots_u = remap_knots(&self.knots_u, self.domain_u(), Interval::UNIT);
-        out.knots_v = remap_knots(&self.knots_v, self.domain_v(), Interval::UNIT);
-        out
-    }
-
-    /// The surface transformed by `xform`, control point by control point in homogeneous
-    /// coordinates (exact for every affine and projective transform).
-    ///
-    /// # Errors
-    /// [`Error::NotFinite`] if the transform is not finite, [`Error::InvalidWeight`] if a
-    /// projective transform sends a control point to or behind the plane at infinity.
-    pub fn transformed(&self, xform: &Transform) -> Result<Self> {
-        if !xform.is_finite() {
-            return Err(Error::NotFinite { what: "transform" });
-        }
-        let m = xform.matrix;
-        let affine = m.row(3) == glam::DVec4::new(0.0, 0.0, 0.0, 1.0);
-        let mut out = self.clone();
-        for (index, (p, w)) in out.points.iter_mut().zip(&mut out.weights).enumerate() {
-            if affine {
-                *p = xform.transform_point(*p);
-            } else {
-                let h = m * glam::DVec4::new(p.x * *w, p.y * *w, p.z * *w, *w);
-                if !(h.w.is_finite() && h.w > 0.0) {
-                    return Err(Error::InvalidWeight { index, weight: h.w });
-                }
-                *p = Point3::new(h.x / h.w, h.y / h.w, h.z / h.w);
-                *w = h.w;
-            }
-            if !p.is_finite() {
-                return Err(Error::NotFinite {
-                    what: "transformed control point",
-                });
-            }
-        }
-        out.rational = out.weights.iter().any(|&w| w != 1.0);
-        Ok(out)
-    }
-
-    /// The surface with the given direction reversed, on the same domain: the point at
-    /// parameter `t` moves to `t0 + t1 − t`. Reversing one direction flips the normal.
-    pub fn reversed(&self, direction: SurfaceDirection) -> Self {
-        let mut out = self.clone();
-        let (nu, nv) = (self.count_u, self.count_v);
-        for i in 0..nu {
-            for j in 0..nv {
-                let (si, sj) = match direction {
-                    SurfaceDirection::U => (nu - 1 - i, j),
-                    SurfaceDirection::V => (i, nv - 1 - j),
-                };
-                out.points[i * nv + j] = self.points[si * nv + sj];
-                out.weights[i * nv + j] = self.weights[si * nv + sj];
-            }
-        }
-        let d = self.domain(direction);
-        let knots = match direction {
-            SurfaceDirection::U => &mut out.knots_u,
-            SurfaceDirection::V => &mut out.knots_v,
-        };
-        let old = knots.clone();
-        let n = old.len();
-        for (i, k) in knots.iter_mut().enumerate() {
-            *k = d.t0 + d.t1 - old[n - 1 - i];
-        }
-        out
-    }
-
-    /// The surface with `u` and `v` swapped (Rhino's Transpose); the normal flips.
-    pub fn transposed(&self) -> Self {
-        let (nu, nv) = (self.count_u, self.count_v);
-        let mut points = Vec::with_capacity(self.points.len());
-        let mut weights = Vec::with_capacity(self.points.len());
-        for j in 0..nv {
-            for i in 0..nu {
-                points.push(self.points[i * nv + j]);
-                weights.push(self.weights[i * nv + j]);
-            }
-        }
-        Self {
-            degree_u: self.degree_v,
-            degree_v: self.degree_u,
-            count_u: nv,
-            count_v: nu,
-            points,
-            weights,
-            knots_u: self.knots_v.clone(),
-            knots_v: self.knots_u.clone(),
-            rational: self.rational,
-        }
-    }
-
-    /// The control points along one side of the grid, in increasing parameter order.
-    fn side_points(&self, side: SurfaceSide) -> Vec<Point3> {
-        let (nu, nv) = (self.count_u, self.count_v);
-        match side {
-            SurfaceSide::South => (0..nu).map(|i| self.points[i * nv]).collect(),
-            SurfaceSide::North => (0..nu).map(|i| self.points[i * nv + nv - 1]).collect(),
-            SurfaceSide::West => self.points[..nv].to_vec(),
-            SurfaceSide::East => self.points[(nu - 1) * nv..].to_vec(),
-        }
-    }
-
-    /// The point a side collapses to, or `None` when the side is not singular.
-    ///
-    /// A side is singular when all its control points coincide within [`ZERO_TOLERANCE`]
-    /// (scaled by the size of the coordinates), as at the poles of a sphere and the apex of a
-    /// cone (openNURBS's `IsSingular`). For a clamped surface the whole boundary curve is then
-    /// that one point.
-    pub fn singular_point(&self, side: SurfaceSide) -> Option<Point3> {
-        let pts = self.side_points(side);
-        let first = pts[0];
-        let scale = 1.0 + first.to_vector().length();
-        pts.iter()
-            .all(|p| p.distance(first) <= ZERO_TOLERANCE * scale)
-            .then_some(first)
-    }
-
-    /// Whether the given side is singular (see [`singular_point`](Self::singular_point)).
-    #[inline]
-    pub fn is_singular(&self, side: SurfaceSide) -> bool {
-        self.singular_point(side).is_some()
-    }
-
-    /// Whether the surface is closed in the given direction: the boundary curves at the start
-    /// and end of that direction coincide (checked on the boundary curves themselves, at the
-    /// control points' Greville-like sample parameters, within `tolerance`).
-    pub fn is_closed(&self, direction: SurfaceDirection, tolerance: f64) -> bool {
-        let (d, other) = (self.domain(direction), self.domain(direction.other()));
-        let samples = 2 * self.count(direction.other()) + 3;
-        (0..=samples).all(|k| {
-            let t = other.parameter_at(k as f64 / samples as f64);
-            let (a, b) = match direction {
-                SurfaceDirection::U => (
-                    self.point_at(d.t0, t),
-                    self.point_at(d.t1, t),
-                ),
-                SurfaceDirection::V => (
-                    self.point_at(t, d.t0),
-                    self.point_at(t, d.t1),
-                ),
-            };
-            a.distance(b) <= tolerance
-        })
-    }
-
     /// The Euclidean control points of the `(p + 1) × (q + 1)` block that defines the span
     /// starting at knot indices `(su, sv)` (Rhino-form span indices).
     pub(crate) fn span_points(&self, su: usize, sv: usize) -> impl Iterator<Item = Point3> + '_ {
@@ -674,23 +504,6 @@ pub(crate) fn check_parameters(u: f64, v: f64) -> Result<()> {
     } else {
         Err(Error::NotFinite { what: "parameter" })
     }
-}
-
-/// Maps knots linearly so that `from` becomes `to`, with the domain ends exact.
-fn remap_knots(knots: &[f64], from: Interval, to: Interval) -> Vec<f64> {
-    let scale = to.length() / from.length();
-    knots
-        .iter()
-        .map(|&k| {
-            if k == from.t0 {
-                to.t0
-            } else if k == from.t1 {
-                to.t1
-            } else {
-                to.t0 + (k - from.t0) * scale
-            }
-        })
-        .collect()
 }
 
 /// Checks the degree, control point count and Rhino-form knots of one direction.
@@ -751,4 +564,207 @@ fn validate_direction(name: &str, degree: usize, count: usize, knots: &[f64]) ->
         });
     }
     Ok(())
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// A wavy bicubic test surface over `[0, 2] × [−1, 3]` with interior knots, optionally
+    /// rational.
+    pub(crate) fn wavy(rational: bool) -> NurbsSurface {
+        let (nu, nv) = (6, 5);
+        let mut points = Vec::new();
+        let mut weights = Vec::new();
+        for i in 0..nu {
+            let mut row = Vec::new();
+            let mut wrow = Vec::new();
+            for j in 0..nv {
+                let (x, y) = (i as f64 * 1.3, j as f64 * 0.9);
+                row.push(Point3::new(x, y, (x * 0.7).sin() + (y * 1.1).cos() * 0.5));
+                wrow.push(if rational {
+                    1.0 + 0.3 * ((i * 3 + j * 5) % 4) as f64
+                } else {
+                    1.0
+                });
+            }
+            points.push(row);
+            weights.push(wrow);
+        }
+        NurbsSurface::new(
+            3,
+            3,
+            points,
+            weights,
+            vec![0.0, 0.0, 0.0, 0.5, 1.2, 2.0, 2.0, 2.0],
+            vec![-1.0, -1.0, -1.0, 1.0, 3.0, 3.0, 3.0],
+        )
+        .unwrap()
+    }
+
+    fn grid(nu: usize, nv: usize) -> Vec<Vec<Point3>> {
+        (0..nu)
+            .map(|i| {
+                (0..nv)
+                    .map(|j| Point3::new(i as f64, j as f64, 0.0))
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn constructor_reports_each_problem() {
+        let ok = |g| NurbsSurface::non_rational(1, 1, g, vec![0.0, 1.0], vec![0.0, 1.0]);
+        assert!(ok(grid(2, 2)).is_ok());
+        assert!(matches!(
+            NurbsSurface::non_rational(0, 1, grid(2, 2), vec![0.0], vec![0.0, 1.0]),
+            Err(Error::InvalidDegree { degree: 0, .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(2, 1, grid(2, 2), vec![0.0, 0.0, 1.0], vec![0.0, 1.0]),
+            Err(Error::TooFewPoints {
+                needed: 3,
+                got: 2,
+                ..
+            })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(1, 1, grid(2, 2), vec![0.0, 1.0, 2.0], vec![0.0, 1.0]),
+            Err(Error::InvalidKnots { .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(1, 1, grid(3, 2), vec![0.0, 2.0, 1.0], vec![0.0, 1.0]),
+            Err(Error::InvalidKnots { .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(1, 1, grid(3, 2), vec![0.0, 1.0, 1.0], vec![0.0, 1.0]),
+            Err(Error::InvalidKnots { .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(1, 1, grid(2, 2), vec![1.0, 1.0], vec![0.0, 1.0]),
+            Err(Error::InvalidKnots { .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::non_rational(1, 1, grid(2, 2), vec![0.0, f64::NAN], vec![0.0, 1.0]),
+            Err(Error::NotFinite { .. })
+        ));
+        let mut ragged = grid(2, 2);
+        ragged[1].pop();
+        assert!(matches!(ok(ragged), Err(Error::InvalidInput(_))));
+        let mut nan = grid(2, 2);
+        nan[1][1].z = f64::INFINITY;
+        assert!(matches!(ok(nan), Err(Error::NotFinite { .. })));
+        let weights = vec![vec![1.0, 1.0], vec![1.0, 0.0]];
+        assert!(matches!(
+            NurbsSurface::new(1, 1, grid(2, 2), weights, vec![0.0, 1.0], vec![0.0, 1.0]),
+            Err(Error::InvalidWeight { index: 3, .. })
+        ));
+        assert!(matches!(
+            NurbsSurface::new(
+                1,
+                1,
+                grid(2, 2),
+                vec![vec![1.0; 2]],
+                vec![0.0, 1.0],
+                vec![0.0, 1.0]
+            ),
+            Err(Error::InvalidInput(_))
+        ));
+    }
+
+    #[test]
+    fn bilinear_patch_interpolates_its_corners() {
+        let s = NurbsSurface::non_rational(
+            1,
+            1,
+            vec![
+                vec![Point3::new(0.0, 0.0, 0.0), Point3::new(0.0, 2.0, 0.0)],
+                vec![Point3::new(4.0, 0.0, 0.0), Point3::new(4.0, 2.0, 8.0)],
+            ],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
+        .unwrap();
+        assert_eq!(s.point_at(0.5, 0.5), Point3::new(2.0, 1.0, 2.0));
+        assert_eq!(s.point_at(1.0, 1.0), Point3::new(4.0, 2.0, 8.0));
+        let d = s.derivatives_at(0.5, 0.5, 2).unwrap();
+        assert_eq!(d.du, Vector3::new(4.0, 0.0, 4.0));
+        assert_eq!(d.dv, Vector3::new(0.0, 2.0, 4.0));
+        assert_eq!(d.duv, Vector3::new(0.0, 0.0, 8.0));
+        assert_eq!(d.duu, Vector3::ZERO);
+        assert!(s.is_valid() && s.is_finite() && !s.is_rational());
+    }
+
+    #[test]
+    fn bad_parameters_are_reported() {
+        let s = wavy(true);
+        assert!(s.try_point_at(f64::NAN, 0.0).is_err());
+        assert!(s.try_point_at(0.0, f64::INFINITY).is_err());
+        assert!(s.derivatives_at(0.0, f64::NAN, 1).is_err());
+        assert!(matches!(
+            s.derivatives_at(0.0, 0.0, 3),
+            Err(Error::InvalidInput(_))
+        ));
+    }
+
+    #[test]
+    fn corners_are_corner_control_points() {
+        for rational in [false, true] {
+            let s = wavy(rational);
+            let (du, dv) = (s.domain_u(), s.domain_v());
+            assert_eq!(du, Interval::new(0.0, 2.0));
+            assert_eq!(dv, Interval::new(-1.0, 3.0));
+            let corner = |u, v| s.point_at(u, v);
+            assert!(corner(du.t0, dv.t0).distance(s.control_point(0, 0).unwrap()) < 1e-15);
+            assert!(corner(du.t1, dv.t1).distance(s.control_point(5, 4).unwrap()) < 1e-14);
+            assert!(s.control_point(6, 0).is_none() && s.weight(0, 5).is_none());
+        }
+    }
+
+    #[test]
+    fn derivatives_match_finite_differences() {
+        let h = 1e-5;
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for &(u, v) in &[(0.3, -0.5), (0.9, 1.7), (1.7, 2.6), (0.55, 1.05)] {
+                let d = s.derivatives_at(u, v, 2).unwrap();
+                assert!(d.point.distance(s.point_at(u, v)) < 1e-14);
+                let p = |du: f64, dv: f64| s.point_at(u + du, v + dv);
+                let fd_u = (p(h, 0.0) - p(-h, 0.0)) / (2.0 * h);
+                let fd_v = (p(0.0, h) - p(0.0, -h)) / (2.0 * h);
+                assert!((d.du - fd_u).length() < 1e-8, "{:?} {:?}", d.du, fd_u);
+                assert!((d.dv - fd_v).length() < 1e-8);
+                // Second derivatives from differences of the exact first derivatives.
+                let d1 = |du: f64, dv: f64| s.derivatives_at(u + du, v + dv, 1).unwrap();
+                let fd_uu = (d1(h, 0.0).du - d1(-h, 0.0).du) / (2.0 * h);
+                let fd_uv = (d1(0.0, h).du - d1(0.0, -h).du) / (2.0 * h);
+                let fd_vv = (d1(0.0, h).dv - d1(0.0, -h).dv) / (2.0 * h);
+                assert!(
+                    (d.duu - fd_uu).length() < 1e-7,
+                    "{u} {v} {rational} {:?} {:?}",
+                    d.duu,
+                    fd_uu
+                );
+                assert!((d.duv - fd_uv).length() < 1e-7);
+                assert!((d.dvv - fd_vv).length() < 1e-7);
+            }
+        }
+    }
+
+    #[test]
+    fn spans_and_creases() {
+        let s = NurbsSurface::non_rational(
+            2,
+            1,
+            grid(5, 3),
+            vec![0.0, 0.0, 1.0, 1.0, 2.0, 2.0],
+            vec![0.0, 0.5, 1.0],
+        )
+        .unwrap();
+        assert_eq!(s.span_breaks(SurfaceDirection::U), vec![0.0, 1.0, 2.0]);
+        assert_eq!(s.c0_knots(SurfaceDirection::U), vec![1.0]);
+        assert_eq!(s.span_breaks(SurfaceDirection::V), vec![0.0, 0.5, 1.0]);
+        assert_eq!(s.c0_knots(SurfaceDirection::V), vec![0.5]);
+        assert!(wavy(false).c0_knots(SurfaceDirection::U).is_empty());
+    }
 }

@@ -22,7 +22,8 @@ pub struct SurfaceCurvature {
     /// The smaller principal curvature, `k2 ≤ k1`.
     pub k2: f64,
     /// The unit principal direction of `k1`, tangent to the surface. At an umbilic (all normal
-    /// curvatures equal) every tangent direction is principal, and this is the unit `Su`.
+    /// curvatures equal) every tangent direction is principal, and this is the unit `Su`
+    /// (up to rounding).
     pub direction1: Vector3,
     /// The unit principal direction of `k2`: `N × direction1`, so that
     /// `(direction1, direction2, N)` is right-handed.
@@ -49,33 +50,38 @@ impl SurfaceCurvature {
         let normal = regular_normal(d).ok_or(Error::Degenerate {
             what: "surface at the curvature point",
         })?;
-        let [e, f, g] = d.first_fundamental_form();
+        let [e, f, _] = d.first_fundamental_form();
         let [l, m, n] = d.second_fundamental_form(normal);
         // EG − F² = |Su × Sv|², computed without cancellation.
         let det = d.du.cross(d.dv).length_squared();
-        if det.is_nan() || det <= 0.0 {
+        let len_u = e.sqrt();
+        if det.is_nan() || det <= 0.0 || len_u <= 0.0 {
             return Err(Error::Degenerate {
                 what: "surface at the curvature point",
             });
         }
-        let gaussian = (l * n - m * m) / det;
-        let mean = (e * n - 2.0 * f * m + g * l) / (2.0 * det);
-        let s = (mean * mean - gaussian).max(0.0).sqrt();
-        // The root of larger magnitude first, the other from the product, to avoid cancellation.
-        let (k1, k2) = if mean >= 0.0 {
-            let k1 = mean + s;
-            (k1, if k1 != 0.0 { gaussian / k1 } else { mean - s })
-        } else {
-            let k2 = mean - s;
-            (gaussian / k2, k2)
-        };
-        let (k1, k2) = if k1 >= k2 { (k1, k2) } else { (k2, k1) };
-        let direction1 = principal_direction(d, [e, f, g], [l, m, n], k1, k2)
-            .or_else(|| d.du.try_normalize())
-            .or_else(|| d.dv.cross(normal).try_normalize())
-            .ok_or(Error::Degenerate {
-                what: "surface at the curvature point",
-            })?;
+        // The shape operator in the orthonormal tangent frame e1 = Su/|Su|, e2 = N × e1 is the
+        // symmetric matrix [[a, b], [b, c]] of the second fundamental form on (e1, e2). Its
+        // eigenvalues follow without cancellation from the mean (a + c)/2 and the radius
+        // hypot((a − c)/2, b), even at near-umbilics.
+        let e1 = d.du / len_u;
+        let e2 = normal.cross(e1);
+        // e1 = α1 Su; e2 = α2 Su + β2 Sv from I·(α2, β2) = (Su·e2, Sv·e2) = (0, Sv·e2).
+        let alpha1 = 1.0 / len_u;
+        let s = d.dv.dot(e2);
+        let (alpha2, beta2) = (-f * s / det, e * s / det);
+        let a = l * alpha1 * alpha1;
+        let b = alpha1 * (l * alpha2 + m * beta2);
+        let c = l * alpha2 * alpha2 + 2.0 * m * alpha2 * beta2 + n * beta2 * beta2;
+        let mean = 0.5 * (a + c);
+        let half_spread = (0.5 * (a - c)).hypot(b);
+        let k1 = mean + half_spread;
+        let k2 = mean - half_spread;
+        let gaussian = a * c - b * b;
+        // The eigenvector of k1 is at angle θ = ½ atan2(2b, a − c) from e1; at an umbilic
+        // (b = 0, a = c) this gives e1 itself.
+        let theta = 0.5 * (2.0 * b).atan2(a - c);
+        let direction1 = e1 * theta.cos() + e2 * theta.sin();
         let direction2 = normal.cross(direction1);
         Ok(Self {
             point: d.point,
@@ -103,31 +109,6 @@ impl SurfaceCurvature {
     }
 }
 
-/// The unit 3-D principal direction for `k1`, or `None` at an umbilic.
-fn principal_direction(
-    d: &SurfaceDerivatives,
-    [e, f, g]: [f64; 3],
-    [l, m, n]: [f64; 3],
-    k1: f64,
-    k2: f64,
-) -> Option<Vector3> {
-    let spread = k1 - k2;
-    if spread.is_nan() || spread <= 1e-12 * 1f64.max(k1.abs()).max(k2.abs()) {
-        return None;
-    }
-    // (II − k I) w = 0: each row gives a direction perpendicular to it in (du, dv); take the
-    // better conditioned one.
-    let (a, b, c) = (l - k1 * e, m - k1 * f, n - k1 * g);
-    let w1 = d.du * b - d.dv * a;
-    let w2 = d.du * c - d.dv * b;
-    let w = if w1.length_squared() >= w2.length_squared() {
-        w1
-    } else {
-        w2
-    };
-    w.try_normalize()
-}
-
 impl NurbsSurface {
     /// The principal curvatures and directions, and the Gaussian and mean curvature, at
     /// `(u, v)` (see [`SurfaceCurvature`] for the sign convention).
@@ -138,5 +119,82 @@ impl NurbsSurface {
     pub fn curvature_at(&self, u: f64, v: f64) -> Result<SurfaceCurvature> {
         check_parameters(u, v)?;
         SurfaceCurvature::from_derivatives(&self.derivatives_unchecked(u, v, 2))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nurbs_surface::tests::wavy;
+    use crate::{Cylinder, Plane, Sphere};
+
+    #[test]
+    fn rhinos_sphere_and_cylinder_signs() {
+        let sphere = Sphere::new(Point3::ORIGIN, 2.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let c = sphere.curvature_at(1.0, 0.3).unwrap();
+        assert!((c.k1 + 0.5).abs() < 1e-12 && (c.k2 + 0.5).abs() < 1e-12);
+        assert!((c.gaussian - 0.25).abs() < 1e-12 && (c.mean + 0.5).abs() < 1e-12);
+        assert!(c.is_umbilic(1e-9));
+
+        let cylinder = Cylinder::new(Plane::WORLD_XY, 1.5, 4.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let c = cylinder.curvature_at(2.0, 1.0).unwrap();
+        assert!(c.k1.abs() < 1e-12 && (c.k2 + 1.0 / 1.5).abs() < 1e-12);
+        assert!((c.direction1.dot(Vector3::Z).abs() - 1.0).abs() < 1e-12);
+        assert!(!c.is_umbilic(1e-9));
+        assert!((c.normal_curvature_at_angle(std::f64::consts::FRAC_PI_2) - c.k2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn principal_directions_are_tangent_and_extremal() {
+        let s = wavy(true);
+        for &(u, v) in &[(0.3, -0.5), (0.9, 1.7), (1.7, 2.6)] {
+            let c = s.curvature_at(u, v).unwrap();
+            let d = s.derivatives_at(u, v, 2).unwrap();
+            assert!(c.k1 >= c.k2);
+            assert!(c.direction1.dot(c.normal).abs() < 1e-12);
+            assert!(c.direction1.dot(c.direction2).abs() < 1e-12);
+            // The normal curvature in a direction w = a Su + b Sv is II(w, w)/I(w, w); it is
+            // k1 along direction1, k2 along direction2, and between them elsewhere.
+            let [e, f, g] = d.first_fundamental_form();
+            let [l, m, n] = d.second_fundamental_form(c.normal);
+            let det = e * g - f * f;
+            let normal_curvature = |w: Vector3| {
+                let (wu, wv) = (w.dot(d.du), w.dot(d.dv));
+                let a = (g * wu - f * wv) / det;
+                let b = (e * wv - f * wu) / det;
+                (l * a * a + 2.0 * m * a * b + n * b * b)
+                    / (e * a * a + 2.0 * f * a * b + g * b * b)
+            };
+            assert!((normal_curvature(c.direction1) - c.k1).abs() < 1e-10);
+            assert!((normal_curvature(c.direction2) - c.k2).abs() < 1e-10);
+            for k in 0..16 {
+                let angle = k as f64 * 0.2;
+                let w = c.direction1 * angle.cos() + c.direction2 * angle.sin();
+                let kn = normal_curvature(w);
+                assert!(kn <= c.k1 + 1e-10 && kn >= c.k2 - 1e-10);
+                assert!((kn - c.normal_curvature_at_angle(angle)).abs() < 1e-10);
+            }
+            assert!((c.gaussian - c.k1 * c.k2).abs() < 1e-12);
+            assert!((c.mean - 0.5 * (c.k1 + c.k2)).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn curvature_at_a_pole_is_reported_as_degenerate() {
+        let sphere = Sphere::new(Point3::ORIGIN, 2.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        assert!(matches!(
+            sphere.curvature_at(0.0, sphere.domain_v().t1),
+            Err(Error::Degenerate { .. })
+        ));
+        assert!(sphere.curvature_at(f64::NAN, 0.0).is_err());
     }
 }

@@ -114,3 +114,86 @@ fn unit_if_significant(w: Vector3, scale: f64) -> Option<Vector3> {
     let len = w.length();
     (len.is_finite() && len > 0.0 && len > SQRT_EPSILON * scale).then(|| w / len)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nurbs_surface::tests::wavy;
+    use crate::{Cone, Point3, Sphere};
+
+    #[test]
+    fn sphere_normals_point_outwards_including_the_poles() {
+        let center = Point3::new(1.0, -2.0, 0.5);
+        let s = Sphere::new(center, 2.0).unwrap().to_nurbs().unwrap();
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        for i in 0..=8 {
+            for j in 0..=8 {
+                let (u, v) = (
+                    du.parameter_at(i as f64 / 8.0),
+                    dv.parameter_at(j as f64 / 8.0),
+                );
+                let n = s.normal_at(u, v).unwrap();
+                let radial = (s.point_at(u, v) - center) / 2.0;
+                assert!(
+                    (n - radial).length() < 1e-12,
+                    "({u}, {v}): {n:?} vs {radial:?}"
+                );
+            }
+        }
+        assert!((s.normal_at(0.3, dv.t0).unwrap() + Vector3::Z).length() < 1e-15);
+        assert!((s.normal_at(5.0, dv.t1).unwrap() - Vector3::Z).length() < 1e-15);
+    }
+
+    #[test]
+    fn cone_apex_normal_is_the_limit_along_the_seam_side() {
+        let cone = Cone::new(Plane::WORLD_XY, 2.0, 1.0).unwrap();
+        let s = cone.to_nurbs().unwrap();
+        for u in [0.0, 1.0, std::f64::consts::PI] {
+            let at_apex = s.normal_at(u, 0.0).unwrap();
+            let near = s.normal_at(u, 1e-7).unwrap();
+            assert!((at_apex - near).length() < 1e-6, "{at_apex:?} vs {near:?}");
+            // Outward and downward: the slant normal of a cone opening upwards.
+            assert!(at_apex.z < 0.0);
+        }
+    }
+
+    #[test]
+    fn frames_are_orthonormal_and_right_handed() {
+        let s = wavy(true);
+        for &(u, v) in &[(0.0, -1.0), (0.7, 0.4), (2.0, 3.0)] {
+            let f = s.frame_at(u, v).unwrap();
+            let n = s.normal_at(u, v).unwrap();
+            assert_eq!(f.z_axis, n);
+            assert!((f.x_axis.length() - 1.0).abs() < 1e-15);
+            assert!(f.x_axis.dot(f.y_axis).abs() < 1e-15);
+            assert!((f.x_axis.cross(f.y_axis) - f.z_axis).length() < 1e-15);
+            let du = s.derivatives_at(u, v, 1).unwrap().du;
+            assert!((f.x_axis - du.try_normalize().unwrap()).length() < 1e-15);
+        }
+        let sphere = Sphere::new(Point3::ORIGIN, 1.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let pole = sphere.frame_at(1.0, sphere.domain_v().t1).unwrap();
+        assert!((pole.z_axis - Vector3::Z).length() < 1e-15);
+        assert!((pole.x_axis.cross(pole.y_axis) - Vector3::Z).length() < 1e-15);
+        assert!(s.frame_at(f64::NAN, 0.0).is_err());
+    }
+
+    #[test]
+    fn a_surface_collapsed_to_a_point_has_no_normal() {
+        let p = Point3::new(1.0, 1.0, 1.0);
+        let s = NurbsSurface::non_rational(
+            1,
+            1,
+            vec![vec![p, p], vec![p, p]],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
+        .unwrap();
+        assert!(matches!(
+            s.normal_at(0.5, 0.5),
+            Err(Error::Degenerate { .. })
+        ));
+    }
+}

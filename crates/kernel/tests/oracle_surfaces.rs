@@ -319,6 +319,8 @@ fn occt_surface_curvatures() {
     let surfaces = occt_surfaces(&file);
     let mut failures = Failures::default();
     let mut total = 0;
+    // Worst relative deviation of k1, k2, Gaussian and mean curvature: elsewhere, at umbilics.
+    let mut worst = [0.0f64; 2];
     for case in file["surface_curvature"]
         .as_array()
         .expect("surface_curvature")
@@ -337,7 +339,8 @@ fn occt_surface_curvatures() {
                 }
             };
             let umbilic = sample["umbilic"] == true;
-            let k_tol = if umbilic { 1e-7 } else { REL };
+            // The file suggests 1e-7 at umbilics; the frame-based eigenvalues reach 1e-9 there too.
+            let k_tol = REL;
             let checks = [
                 ("k1", c.k1, num(&sample["k1"]), k_tol),
                 ("k2", c.k2, num(&sample["k2"]), k_tol),
@@ -345,6 +348,13 @@ fn occt_surface_curvatures() {
                 ("mean", c.mean, num(&sample["mean"]), REL),
             ];
             for (what, ours, theirs, tol) in checks {
+                let deviation = (ours - theirs).abs() / theirs.abs().max(1.0);
+                let worst_entry = if umbilic {
+                    &mut worst[1]
+                } else {
+                    &mut worst[0]
+                };
+                *worst_entry = worst_entry.max(deviation);
                 failures.check(close(ours, theirs, tol), || {
                     format!("{label}: {what} {ours}, expected {theirs}")
                 });
@@ -370,6 +380,10 @@ fn occt_surface_curvatures() {
             }
         }
     }
+    eprintln!(
+        "surface curvatures: worst relative deviation {:e} (umbilics {:e})",
+        worst[0], worst[1]
+    );
     assert!(total > 0, "no cases in occt surface_curvature");
     failures.finish("occt surface_curvature");
 }
