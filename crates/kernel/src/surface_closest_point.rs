@@ -503,3 +503,124 @@ fn box_distance_squared(points: impl Iterator<Item = Point3>, p: Point3) -> f64 
         })
         .sum()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nurbs_surface::tests::wavy;
+    use crate::{Cone, Interval, Plane, Sphere, Vector3};
+
+    /// The smallest distance over a dense grid, as an upper bound for the closest point.
+    fn brute_force(s: &NurbsSurface, p: Point3, n: usize) -> f64 {
+        let mut best = f64::INFINITY;
+        for i in 0..=n {
+            for j in 0..=n {
+                let u = s.domain_u().parameter_at(i as f64 / n as f64);
+                let v = s.domain_v().parameter_at(j as f64 / n as f64);
+                best = best.min(s.point_at(u, v).distance(p));
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn plane_interior_edge_and_corner() {
+        let s = NurbsSurface::from_plane(
+            &Plane::WORLD_XY,
+            Interval::new(0.0, 4.0),
+            Interval::new(0.0, 2.0),
+        )
+        .unwrap();
+        let cp = s.closest_point(Point3::new(1.0, 1.5, 3.0)).unwrap();
+        assert_eq!((cp.u, cp.v, cp.distance), (1.0, 1.5, 3.0));
+        let cp = s.closest_point(Point3::new(2.0, -1.0, 0.0)).unwrap();
+        assert!((cp.u - 2.0).abs() < 1e-15 && cp.v == 0.0 && (cp.distance - 1.0).abs() < 1e-15);
+        let cp = s.closest_point(Point3::new(7.0, 6.0, 0.0)).unwrap();
+        assert_eq!((cp.u, cp.v, cp.distance), (4.0, 2.0, 5.0));
+    }
+
+    #[test]
+    fn never_farther_than_a_dense_sample() {
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for p in [
+                Point3::new(3.0, 2.0, 4.0),
+                Point3::new(-2.0, -1.0, 0.0),
+                Point3::new(9.0, 5.0, -3.0),
+                Point3::new(3.3, 1.6, 0.1),
+                Point3::new(100.0, -50.0, 20.0),
+            ] {
+                let cp = s.closest_point(p).unwrap();
+                assert!(cp.point.distance(s.point_at(cp.u, cp.v)) < 1e-14);
+                assert!((cp.point.distance(p) - cp.distance).abs() < 1e-14);
+                let sampled = brute_force(&s, p, 200);
+                assert!(
+                    cp.distance <= sampled + 1e-12,
+                    "{p:?}: {} vs {sampled}",
+                    cp.distance
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn crease_is_found() {
+        // A degree-1 fold along v = 1: the nearest point to a point outside the fold is on it.
+        let s = NurbsSurface::non_rational(
+            1,
+            1,
+            vec![
+                vec![
+                    Point3::new(0.0, 0.0, 0.0),
+                    Point3::new(0.0, 1.0, 1.0),
+                    Point3::new(0.0, 2.0, 0.0),
+                ],
+                vec![
+                    Point3::new(1.0, 0.0, 0.0),
+                    Point3::new(1.0, 1.0, 1.0),
+                    Point3::new(1.0, 2.0, 0.0),
+                ],
+            ],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0, 2.0],
+        )
+        .unwrap();
+        let cp = s.closest_point(Point3::new(0.5, 1.0, 3.0)).unwrap();
+        assert!((cp.v - 1.0).abs() < 1e-12 && (cp.u - 0.5).abs() < 1e-12);
+        assert!((cp.distance - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn sphere_and_cone_special_points() {
+        let c = Point3::new(1.0, -2.0, 0.5);
+        let sphere = Sphere::new(c, 2.0).unwrap().to_nurbs().unwrap();
+        // From the centre every point is at the radius.
+        let cp = sphere.closest_point(c).unwrap();
+        assert!((cp.distance - 2.0).abs() < 1e-12);
+        // On the axis above the north pole the pole itself.
+        let cp = sphere
+            .closest_point(c + Vector3::new(0.0, 0.0, 5.0))
+            .unwrap();
+        assert!((cp.distance - 3.0).abs() < 1e-12);
+        assert!(cp.point.distance(c + Vector3::new(0.0, 0.0, 2.0)) < 1e-12);
+        // A cone's apex from behind it.
+        let cone = Cone::new(Plane::WORLD_XY, 2.0, 1.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let cp = cone.closest_point(Point3::new(0.1, 0.0, -3.0)).unwrap();
+        assert!(cp.point.distance(Point3::ORIGIN) < 1e-12 && cp.v == 0.0);
+    }
+
+    #[test]
+    fn restricted_search_and_bad_input() {
+        let s = wavy(false);
+        let p = Point3::new(3.0, 2.0, 4.0);
+        let whole = s.closest_point(p).unwrap();
+        let part = s.closest_point_in(p, [0.0, 0.5], [-1.0, 0.0]).unwrap();
+        assert!(part.distance >= whole.distance);
+        assert!(part.u <= 0.5 && part.v <= 0.0);
+        assert!(s.closest_point(Point3::new(f64::NAN, 0.0, 0.0)).is_err());
+        assert!(s.closest_point_in(p, [1.0, 0.0], [0.0, 1.0]).is_err());
+    }
+}

@@ -404,3 +404,103 @@ impl Cone {
         NurbsSurface::from_flat([2, 1], [9, 2], points, weights, [circle_knots(), knots_v])
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Vector3;
+
+    fn tilted() -> Plane {
+        Plane::from_normal(Point3::new(1.0, 2.0, -1.0), Vector3::new(0.3, -1.0, 2.0)).unwrap()
+    }
+
+    fn for_grid(s: &NurbsSurface, mut f: impl FnMut(f64, f64)) {
+        for i in 0..=12 {
+            for j in 0..=12 {
+                f(
+                    s.domain_u().parameter_at(i as f64 / 12.0),
+                    s.domain_v().parameter_at(j as f64 / 12.0),
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn plane_surface_is_the_rectangle() {
+        let plane = tilted();
+        let s = NurbsSurface::from_plane(&plane, Interval::new(-1.0, 3.0), Interval::new(2.0, 5.0))
+            .unwrap();
+        assert_eq!(s.domain_u(), Interval::new(-1.0, 3.0));
+        assert_eq!(s.domain_v(), Interval::new(2.0, 5.0));
+        for_grid(&s, |u, v| {
+            assert!(s.point_at(u, v).distance(plane.point_at(u, v, 0.0)) < 1e-14);
+            assert!((s.normal_at(u, v).unwrap() - plane.z_axis).length() < 1e-15);
+        });
+        assert!(NurbsSurface::from_plane(&plane, Interval::new(1.0, 0.0), Interval::UNIT).is_err());
+        assert!(NurbsSurface::from_plane(&plane, Interval::new(1.0, 1.0), Interval::UNIT).is_err());
+    }
+
+    #[test]
+    fn round_forms_lie_on_their_analytic_surfaces() {
+        let plane = tilted();
+        let sphere = Sphere::from_plane(plane, 2.5).unwrap();
+        let s = sphere.to_nurbs().unwrap();
+        assert_eq!(s.domain_u(), Interval::new(0.0, TAU));
+        assert_eq!(s.domain_v(), Interval::new(-FRAC_PI_2, FRAC_PI_2));
+        for_grid(&s, |u, v| {
+            assert!((s.point_at(u, v).distance(plane.origin) - 2.5).abs() < 1e-14);
+        });
+        // The knots land on the axes: u = π/2 on the y axis, v = π/2 at the north pole.
+        assert!(
+            s.point_at(FRAC_PI_2, 0.0)
+                .distance(plane.point_at(0.0, 2.5, 0.0))
+                < 1e-14
+        );
+        assert!(
+            s.point_at(1.0, FRAC_PI_2)
+                .distance(plane.point_at(0.0, 0.0, 2.5))
+                < 1e-14
+        );
+
+        let cylinder = Cylinder::new(plane, 1.5, -4.0).unwrap();
+        assert_eq!(cylinder.height, Interval::new(-4.0, 0.0));
+        let c = cylinder.to_nurbs().unwrap();
+        for_grid(&c, |u, v| {
+            let [x, y, z] = plane.local_coordinates(c.point_at(u, v));
+            assert!((x.hypot(y) - 1.5).abs() < 1e-14 && (z - v).abs() < 1e-14);
+        });
+
+        let cone = Cone::new(plane, 3.0, 1.5).unwrap();
+        let k = cone.to_nurbs().unwrap();
+        for_grid(&k, |u, v| {
+            let [x, y, z] = plane.local_coordinates(k.point_at(u, v));
+            assert!((x.hypot(y) - 1.5 * z / 3.0).abs() < 1e-14 && (z - v).abs() < 1e-14);
+        });
+        assert!((cone.lateral_area() - PI * 1.5 * 1.5f64.hypot(3.0)).abs() < 1e-14);
+        assert!((cone.volume() - PI * 2.25).abs() < 1e-14);
+        assert!((sphere.area() - 25.0 * PI).abs() < 1e-12);
+        assert!((sphere.volume() - 4.0 / 3.0 * PI * 2.5f64.powi(3)).abs() < 1e-12);
+        assert!((cylinder.volume() - PI * 2.25 * 4.0).abs() < 1e-12);
+        assert!((cylinder.lateral_area() - TAU * 1.5 * 4.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bad_dimensions_are_errors() {
+        let plane = tilted();
+        assert!(Sphere::new(Point3::ORIGIN, 0.0).is_err());
+        assert!(Sphere::new(Point3::ORIGIN, -1.0).is_err());
+        assert!(matches!(
+            Sphere::new(Point3::ORIGIN, f64::NAN),
+            Err(Error::NotFinite { .. })
+        ));
+        assert!(Sphere::new(Point3::new(f64::NAN, 0.0, 0.0), 1.0).is_err());
+        assert!(Cylinder::new(plane, 1.0, 0.0).is_err());
+        assert!(Cylinder::new(plane, 1.0, f64::INFINITY).is_err());
+        assert!(Cylinder::with_extent(plane, 1.0, Interval::new(2.0, 1.0)).is_err());
+        assert!(Cone::new(plane, 0.0, 1.0).is_err());
+        assert!(Cone::new(plane, 1.0, -1.0).is_err());
+        // Overflowing control points are reported, not returned.
+        let huge = Sphere::new(Point3::new(f64::MAX, 0.0, 0.0), f64::MAX).unwrap();
+        assert!(huge.to_nurbs().is_err());
+    }
+}

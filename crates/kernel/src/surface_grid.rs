@@ -158,3 +158,77 @@ fn fill_row<const N: usize>(
         *o = Point3::new(x, y, z);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nurbs_surface::tests::wavy;
+    use crate::{Interval, Plane, Sphere};
+
+    fn check_against_point_at(s: &NurbsSurface) {
+        let us: Vec<f64> = (0..=13)
+            .map(|i| s.domain_u().parameter_at(i as f64 / 13.0))
+            .collect();
+        let vs: Vec<f64> = (0..=9)
+            .map(|j| s.domain_v().parameter_at(j as f64 / 9.0))
+            .collect();
+        let mut out = vec![Point3::ORIGIN; us.len() * vs.len()];
+        s.points_on_grid(&us, &vs, &mut out).unwrap();
+        for (i, &u) in us.iter().enumerate() {
+            for (j, &v) in vs.iter().enumerate() {
+                let d = out[i * vs.len() + j].distance(s.point_at(u, v));
+                assert!(d < 1e-13, "({u}, {v}): off by {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn grid_matches_pointwise_evaluation() {
+        check_against_point_at(&wavy(false));
+        check_against_point_at(&wavy(true));
+        check_against_point_at(
+            &Sphere::new(Point3::ORIGIN, 3.0)
+                .unwrap()
+                .to_nurbs()
+                .unwrap(),
+        );
+        check_against_point_at(
+            &NurbsSurface::from_plane(&Plane::WORLD_YZ, Interval::new(-1.0, 2.0), Interval::UNIT)
+                .unwrap(),
+        );
+        // Degree 5 × 2, outside the unrolled orders.
+        let points = (0..6)
+            .map(|i| {
+                (0..3)
+                    .map(|j| Point3::new(i as f64, j as f64, ((i * j) % 3) as f64))
+                    .collect()
+            })
+            .collect();
+        let s = NurbsSurface::non_rational(
+            5,
+            2,
+            points,
+            vec![0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        check_against_point_at(&s);
+        check_against_point_at(&s.transposed());
+    }
+
+    #[test]
+    fn grid_input_is_checked() {
+        let s = wavy(false);
+        let mut out = vec![Point3::ORIGIN; 3];
+        assert!(matches!(
+            s.points_on_grid(&[0.0, 1.0], &[0.0, 1.0], &mut out),
+            Err(Error::InvalidInput(_))
+        ));
+        let mut out = vec![Point3::ORIGIN; 4];
+        assert!(matches!(
+            s.points_on_grid(&[0.0, f64::NAN], &[0.0, 1.0], &mut out),
+            Err(Error::NotFinite { .. })
+        ));
+        assert!(s.points_on_grid(&[], &[0.0], &mut []).is_ok());
+    }
+}
