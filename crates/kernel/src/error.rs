@@ -65,6 +65,13 @@ pub enum Error {
     /// A parameter or interval outside what the operation accepts.
     #[error("{0}")]
     InvalidInput(String),
+    /// The geometry is degenerate where the operation needs it not to be, such as a surface
+    /// whose partial derivatives are zero or parallel at the requested parameters.
+    #[error("{what} is degenerate")]
+    Degenerate {
+        /// What is degenerate, such as `"surface frame"`.
+        what: &'static str,
+    },
     /// An iterative method did not reach its tolerance.
     #[error("{what} did not converge")]
     NoConvergence {

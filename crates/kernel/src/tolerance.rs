@@ -23,7 +23,8 @@ pub const ANGLE_TOLERANCE: f64 = 1e-9;
 /// this of zero (angles below about 1.5e-8 rad, or that close to a half turn) is built as the exact
 /// identity or half turn, and one whose cosine is this close to zero as an exact quarter turn.
 /// [`Transform::rotation`](crate::Transform::rotation) does the same so that our matrices equal
-/// Rhino's entry for entry.
+/// Rhino's entry for entry. Surfaces use it too: a partial derivative smaller than this relative
+/// to the other counts as negligible, so that the normal must be found as a limit (at poles).
 pub const SQRT_EPSILON: f64 = 1.490_116_119_385e-8;
 
 /// How far from singular a transform must be for [`Transform::inverse`](crate::Transform::inverse)
@@ -38,6 +39,7 @@ pub const SQRT_EPSILON: f64 = 1.490_116_119_385e-8;
 /// significant digits, so the transform is reported as singular instead. For affine transforms
 /// only the 3×3 linear part is measured, so translations, however large, never count.
 pub const SINGULAR_TOLERANCE: f64 = 1e-12;
+
 /// The default relative tolerance of arc lengths: adaptive quadrature stops when its error
 /// estimate is below 1e-12 of the curve's length.
 pub const LENGTH_TOLERANCE: f64 = 1e-12;
