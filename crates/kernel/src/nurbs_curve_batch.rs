@@ -10,7 +10,7 @@
 //! ```
 //!
 //! for the homogeneous curve `A = (Σ N w P, Σ N w)`, and then evaluates each parameter with
-//! Horner's rule: `p` fused multiply–adds per coordinate and no division (one for rational
+//! Horner's rule: `p` multiply–adds per coordinate and no division (one for rational
 //! curves). The span of consecutive parameters is found by checking the previous span first, so
 //! sorted input never searches.
 //!
@@ -158,11 +158,13 @@ impl PowerForm {
         let dt = t - self.starts[s];
         let c = &self.coefficients[s * (p + 1)..(s + 1) * (p + 1)];
         let [mut x, mut y, mut z, mut w] = c[0];
+        // Plain multiply-add rather than `mul_add`, which is a libm call on targets compiled
+        // without the FMA feature.
         for k in &c[1..] {
-            x = x.mul_add(dt, k[0]);
-            y = y.mul_add(dt, k[1]);
-            z = z.mul_add(dt, k[2]);
-            w = w.mul_add(dt, k[3]);
+            x = x * dt + k[0];
+            y = y * dt + k[1];
+            z = z * dt + k[2];
+            w = w * dt + k[3];
         }
         if self.rational {
             let r = 1.0 / w;
