@@ -37,6 +37,24 @@ impl NurbsCurve {
     /// parameters per span (and degree at most 7) the method allocates one table of
     /// `degree + 1` coefficients per span, once per call; otherwise it does not allocate.
     ///
+    /// # Performance
+    /// Measured with `cargo bench -p locus-kernel --bench curve_eval` (1,000,000 parameters on a
+    /// cubic with 64 control points and 61 spans, one thread, on the shared 2-core AMD EPYC
+    /// development machine under a load average of about 9, so wall-clock figures are
+    /// depressed; CPU time is that of the benchmarking thread):
+    ///
+    /// | path | wall clock | CPU time |
+    /// | --- | --- | --- |
+    /// | `points_at`, sorted parameters | 57 M points/s | 101 M points/s |
+    /// | `points_at`, scrambled parameters | 18 M points/s | 46 M points/s |
+    /// | `point_at` loop (baseline) | 5.0 M points/s | 16.8 M points/s |
+    /// | rational: `points_at`, sorted | 32 M points/s | 113 M points/s |
+    /// | rational: `point_at` loop | 6.4 M points/s | 12.9 M points/s |
+    ///
+    /// Sorted batches are 6× (non-rational) to 9× (rational) faster than the per-point path in
+    /// CPU time, and above the 30 M points/s target even in wall-clock time on the loaded
+    /// machine.
+    ///
     /// # Errors
     /// [`Error::InvalidInput`] when `ts` and `out` have different lengths.
     pub fn points_at(&self, ts: &[f64], out: &mut [Point3]) -> Result<()> {
