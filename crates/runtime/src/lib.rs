@@ -11,9 +11,11 @@ mod plan;
 mod registry;
 mod solve;
 mod tree;
+mod tree_text;
 mod value;
+mod value_text;
 
-pub use crate::cast::can_cast;
+pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value, number_to_integer};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
@@ -27,4 +29,6 @@ pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
 pub use crate::solve::Solve;
 pub use crate::tree::{Branch, DataTree};
+pub use crate::tree_text::{TreeText, TreeTextError};
 pub use crate::value::{Column, DataType, Item, Shared, Value};
+pub use crate::value_text::{format_number, format_value, parse_number};
