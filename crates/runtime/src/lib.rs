@@ -7,10 +7,13 @@ mod cast;
 mod graph;
 mod node;
 mod path;
+mod path_mapper;
 mod plan;
 mod registry;
+mod simplify;
 mod solve;
 mod tree;
+mod tree_ops;
 mod tree_text;
 mod value;
 mod value_text;
@@ -25,10 +28,13 @@ pub use crate::node::{
     VariableInputs,
 };
 pub use crate::path::{PathParseError, TreePath};
+pub use crate::path_mapper::{MAX_ITEM_PADDING, PathMapError, PathMapper};
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
+pub use crate::simplify::SimplifyMode;
 pub use crate::solve::Solve;
 pub use crate::tree::{Branch, DataTree};
+pub use crate::tree_ops::{GraftMode, TreeError};
 pub use crate::tree_text::{TreeText, TreeTextError};
 pub use crate::value::{Column, DataType, Item, Shared, Value};
 pub use crate::value_text::{format_number, format_value, parse_number};
