@@ -20,17 +20,21 @@
 //! ```
 
 pub mod basis;
+mod bounding_box;
 mod error;
 mod interval;
+mod oriented_box;
 mod plane;
 mod point;
 pub mod tolerance;
 mod transform;
 mod vector;
 
+pub use crate::bounding_box::BoundingBox;
 pub use crate::error::{Error, Result};
 pub use crate::interval::Interval;
+pub use crate::oriented_box::OrientedBox;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
 pub use crate::transform::Transform;
-pub use crate::vector::Vector3;
+pub use crate::vector::{Parallelism, Vector3};

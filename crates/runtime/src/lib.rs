@@ -3,8 +3,13 @@
 //! The runtime names no concrete node: node types are registered by the node library (or by a
 //! host) in a `NodeRegistry` value.
 
+mod call;
 mod cast;
+mod collect;
+mod evaluator;
 mod graph;
+mod iterate;
+mod message;
 mod node;
 mod path;
 mod path_mapper;
@@ -18,11 +23,14 @@ mod tree_text;
 mod value;
 mod value_text;
 
+pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value, number_to_integer};
+pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
 };
+pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
     VariableInputs,
@@ -32,7 +40,7 @@ pub use crate::path_mapper::{MAX_ITEM_PADDING, PathMapError, PathMapper};
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
 pub use crate::simplify::SimplifyMode;
-pub use crate::solve::Solve;
+pub use crate::solve::{ListView, Solve};
 pub use crate::tree::{Branch, DataTree};
 pub use crate::tree_ops::{GraftMode, TreeError};
 pub use crate::tree_text::{TreeText, TreeTextError};
