@@ -248,7 +248,7 @@ impl PathMapper {
             }
         }
 
-        let data_type = tree.data_type();
+        let data_type = crate::tree_ops::storage_type(tree);
         let branches = targets.into_iter().map(|(path, slots)| {
             let mut out = Branch::new(data_type);
             for slot in slots {

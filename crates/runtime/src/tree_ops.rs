@@ -76,7 +76,7 @@ impl DataTree {
         if self.is_empty() {
             return;
         }
-        let data_type = self.data_type();
+        let data_type = storage_type(self);
         let total = self.item_count();
         let mut branches = std::mem::take(self).into_branches();
         let merged = if branches.len() == 1 {
@@ -286,6 +286,21 @@ impl Branch {
             out.extend_range(self, r);
         }
         out
+    }
+}
+
+/// The column type for branches built from a tree's items: the type of its items, or, for a
+/// tree without items, the type its (empty) branches share, so that empty typed branches stay
+/// typed.
+pub(crate) fn storage_type(tree: &DataTree) -> crate::DataType {
+    let data_type = tree.data_type();
+    if data_type != crate::DataType::Generic || !tree.has_no_items() {
+        return data_type;
+    }
+    let mut types = tree.branches().iter().map(|(_, b)| b.data_type());
+    match types.next() {
+        Some(first) if types.all(|t| t == first) => first,
+        _ => crate::DataType::Generic,
     }
 }
 
