@@ -650,6 +650,29 @@ mod tests {
     }
 
     #[test]
+    fn the_documented_examples() {
+        let cases = [
+            (
+                "{A;B}(i)",
+                "{B;A}(i)",
+                "{0;0}:[1, 2] {0;1}:[5, 6] {1;0}:[3, 4]",
+            ),
+            ("{A;B}(i)", "{A}", "{0}:[1, 2, 3, 4] {1}:[5, 6]"),
+            ("{A;B}(i)", "{A}(i)", "{0}:[3, 4] {1}:[5, 6]"),
+            (
+                "{A;B}(i)",
+                "{A;B;i}",
+                "{0;0;0}:[1] {0;0;1}:[2] {0;1;0}:[3] {0;1;1}:[4] {1;0;0}:[5] {1;0;1}:[6]",
+            ),
+            ("{A;B}(i)", "{i}", "{0}:[1, 3, 5] {1}:[2, 4, 6]"),
+            ("{A;B}", "{path_index}", "{0}:[1, 2] {1}:[3, 4] {2}:[5, 6]"),
+        ];
+        for (source, target, expected) in cases {
+            assert_eq!(map(source, target, GRID), expected, "{source} -> {target}");
+        }
+    }
+
+    #[test]
     fn item_indices_pad_with_nulls() {
         assert_eq!(
             map("{A}(i)", "{A}(i*2)", "{0}:[1, 2, 3]"),
