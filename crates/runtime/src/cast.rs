@@ -195,26 +195,53 @@ where
         return cast_each(branch, to);
     };
     let mask = branch.null_mask();
-    let mut out = Vec::with_capacity(items.len());
-    let mut nulls = mask.to_vec();
-    let mut errors = Vec::new();
-    for (i, a) in items.iter().enumerate() {
-        if !mask.is_empty() && mask[i] {
-            out.push(B::placeholder());
-            continue;
-        }
-        match f(a) {
-            Some(b) => out.push(b),
-            None => {
-                out.push(B::placeholder());
-                if nulls.is_empty() {
-                    nulls = vec![false; items.len()];
+    let mut failed: Vec<usize> = Vec::new();
+    // Collecting from a mapped slice iterator writes the output without capacity checks.
+    let out: Vec<B> = if mask.is_empty() {
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, a)| {
+                f(a).unwrap_or_else(|| {
+                    failed.push(i);
+                    B::placeholder()
+                })
+            })
+            .collect()
+    } else {
+        items
+            .iter()
+            .zip(mask)
+            .enumerate()
+            .map(|(i, (a, &null))| {
+                if null {
+                    return B::placeholder();
                 }
-                nulls[i] = true;
-                errors.push((i, CastError::for_value(&a.clone().into_value(), to)));
-            }
-        }
+                f(a).unwrap_or_else(|| {
+                    failed.push(i);
+                    B::placeholder()
+                })
+            })
+            .collect()
+    };
+    if failed.is_empty() {
+        return (
+            Branch::from_parts(B::into_column(out), mask.to_vec()),
+            Vec::new(),
+        );
     }
+    let mut nulls = if mask.is_empty() {
+        vec![false; items.len()]
+    } else {
+        mask.to_vec()
+    };
+    let errors = failed
+        .into_iter()
+        .map(|i| {
+            nulls[i] = true;
+            (i, CastError::for_value(&items[i].clone().into_value(), to))
+        })
+        .collect();
     (Branch::from_parts(B::into_column(out), nulls), errors)
 }
 

@@ -233,7 +233,8 @@ impl DataTree {
         for j in 0..columns {
             let mut indices = first.indices().to_vec();
             indices[locus] = index_u32(j);
-            let mut column = Branch::new(data_type);
+            let rows = self.branch_count();
+            let mut column = Branch::from_column(crate::Column::with_capacity(data_type, rows));
             for (_, row) in self.branches() {
                 if j < row.len() {
                     column.extend_range(row, j..j + 1);

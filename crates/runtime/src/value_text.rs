@@ -43,6 +43,13 @@ pub fn write_number(out: &mut String, x: f64) {
         out.push_str(if x.is_sign_negative() { "-0" } else { "0" });
         return;
     }
+    // Within these bounds the shortest digits have a decimal exponent from -4 to 14: the bounds
+    // are the doubles nearest 1e-4 and exactly 1e15, whose own shortest digits are `1e-4` and
+    // `1e15`, so no value inside can print with an exponent outside.
+    if (1e-4..1e15).contains(&x.abs()) {
+        let _ = write!(out, "{x}");
+        return;
+    }
     // `{:e}` prints the shortest round-trip digits as `d.ddde±x`.
     let scientific = format!("{x:e}");
     let (mantissa, exponent) = scientific
@@ -190,6 +197,8 @@ mod tests {
             (-2.5e20, "-2.5E+20"),
             (1e100, "1E+100"),
             (0.0001, "0.0001"),
+            (0.00009999999999999999, "9.999999999999999E-05"),
+            (999999999999999.9, "999999999999999.9"),
             (0.00001, "1E-05"),
             (1.5e-7, "1.5E-07"),
             (0.0, "0"),
