@@ -36,7 +36,7 @@ pub use crate::node::{
     VariableInputs,
 };
 pub use crate::path::{PathParseError, TreePath};
-pub use crate::path_mapper::{MAX_ITEM_PADDING, PathMapError, PathMapper};
+pub use crate::path_mapper::{MAX_ITEM_PADDING, MAX_MASK_TOKENS, PathMapError, PathMapper};
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
 pub use crate::simplify::SimplifyMode;

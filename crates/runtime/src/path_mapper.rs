@@ -26,6 +26,10 @@ use crate::{Branch, DataTree, TreePath};
 /// a runaway expression cannot allocate unbounded null padding.
 pub const MAX_ITEM_PADDING: usize = 1 << 20;
 
+/// The most tokens a mask may have. Expressions are parsed and evaluated recursively, so this
+/// bounds their depth (and stack use) for any input.
+pub const MAX_MASK_TOKENS: usize = 1000;
+
 /// The names of the constants available in target masks.
 const CONSTANTS: [&str; 3] = ["item_count", "path_count", "path_index"];
 
@@ -405,6 +409,13 @@ impl<'a> Lexer<'a> {
                 }
                 other => return Err(syntax(mask, at, format!("unexpected `{other}`"))),
             };
+            if tokens.len() == MAX_MASK_TOKENS {
+                return Err(syntax(
+                    mask,
+                    at,
+                    format!("the mask is too long (more than {MAX_MASK_TOKENS} tokens)"),
+                ));
+            }
             tokens.push((token, at));
         }
         Ok(Self {
@@ -796,6 +807,20 @@ mod tests {
             let e = PathMapper::new(source, target).unwrap_err();
             assert_eq!(e.to_string(), message, "{source} -> {target}");
         }
+    }
+
+    #[test]
+    fn huge_masks_are_refused_not_overflowing_the_stack() {
+        let deep = format!("{{{}A{}}}", "(".repeat(5000), ")".repeat(5000));
+        let e = PathMapper::new("{A}", &deep).unwrap_err();
+        assert!(e.to_string().contains("the mask is too long"), "{e}");
+        let chain = format!("{{A{}}}", "+1".repeat(400));
+        let m = PathMapper::new("{A}", &chain).unwrap();
+        let tree = DataTree::from_text("{2}:[1]").unwrap();
+        assert_eq!(m.apply(&tree).unwrap().to_text(), "{402}:[1]");
+        let negations = format!("{{{}A}}", "-".repeat(996));
+        let m = PathMapper::new("{A}", &negations).unwrap();
+        assert_eq!(m.apply(&tree).unwrap().to_text(), "{2}:[1]");
     }
 
     #[test]

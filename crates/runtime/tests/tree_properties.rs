@@ -242,6 +242,19 @@ proptest! {
     }
 
     #[test]
+    fn tree_text_parsing_of_any_text_never_panics(text in "\\PC{0,40}") {
+        for data_type in DataType::ALL {
+            let _ = DataTree::parse_text(&text, *data_type);
+        }
+    }
+
+    #[test]
+    fn path_mapper_parsing_of_any_text_never_panics(source in "\\PC{0,20}", target in "\\PC{0,20}") {
+        let _ = PathMapper::new(&source, &target);
+        let _ = PathMapper::parse(&source);
+    }
+
+    #[test]
     fn path_mapper_parsing_never_panics(source in "[{}();A-Ci0-9+*/%\\\\ -]{0,16}", target in "[{}();A-Ci0-9+*/%\\\\ -]{0,16}") {
         if let Ok(mapper) = PathMapper::new(&source, &target) {
             let tree = DataTree::from_text("{0;1}:[1, 2] {1;0}:[3]").unwrap();
