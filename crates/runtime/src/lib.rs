@@ -5,6 +5,7 @@
 
 mod call;
 mod cast;
+mod cast_rules;
 mod collect;
 mod evaluator;
 mod graph;
@@ -13,6 +14,7 @@ mod message;
 mod node;
 mod path;
 mod path_mapper;
+mod path_mask;
 mod plan;
 mod registry;
 mod simplify;
@@ -24,7 +26,8 @@ mod value;
 mod value_text;
 
 pub use crate::call::{NodeCall, NodeCallResult};
-pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value, number_to_integer};
+pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value};
+pub use crate::cast_rules::number_to_integer;
 pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
@@ -36,7 +39,8 @@ pub use crate::node::{
     VariableInputs,
 };
 pub use crate::path::{PathParseError, TreePath};
-pub use crate::path_mapper::{MAX_ITEM_PADDING, MAX_MASK_TOKENS, PathMapError, PathMapper};
+pub use crate::path_mapper::{MAX_ITEM_PADDING, PathMapError, PathMapper};
+pub use crate::path_mask::MAX_MASK_TOKENS;
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
 pub use crate::simplify::SimplifyMode;
