@@ -16,7 +16,10 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use locus_kernel::{Interval, Plane, Point3, Vector3};
+use locus_kernel::{
+    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Vector3,
+};
 
 use crate::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
@@ -26,7 +29,7 @@ use crate::value_text::{
     format_boolean, format_domain, format_number, format_plane, format_point, format_transform,
     format_value, format_vector, parse_number, write_quoted,
 };
-use crate::{Branch, DataTree, DataType, Item, TreePath, Value};
+use crate::{Branch, DataTree, DataType, Item, Shared, TreePath, Value};
 
 /// Whether items of type `from` can in general be cast to `to`, for checking wires before
 /// running. Individual items may still fail (text that is not a number) and are then reported
@@ -51,6 +54,10 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Plane, Point)
             | (Domain, Number)
             | (Point | Vector | Plane | Domain | Transform, Text)
+            | (Line | Circle | Arc, Curve)
+            | (Line | Circle | Arc | Curve, Number)
+            | (Curve, Line | Circle | Arc)
+            | (Box | Line | Circle | Arc | Curve | Surface, Text)
     )
 }
 
@@ -301,12 +308,50 @@ cast_table! {
     Domain(Interval) => Text(String) = |d: &Interval| Some(format_domain(*d));
     Transform(locus_kernel::Transform) => Text(String) =
         |t: &locus_kernel::Transform| Some(format_transform(t));
+    Line(Line) => Curve(Shared<Curve>) = |l: &Line| Some(Shared::new(Curve::from(*l)));
+    Circle(Circle) => Curve(Shared<Curve>) = |c: &Circle| Some(Shared::new(Curve::from(*c)));
+    Arc(ArcCurve) => Curve(Shared<Curve>) = |a: &ArcCurve| Some(Shared::new(Curve::from(*a)));
+    Line(Line) => Number(f64) = |l: &Line| Some(l.length());
+    Circle(Circle) => Number(f64) = |c: &Circle| Some(std::f64::consts::TAU * c.radius);
+    Arc(ArcCurve) => Number(f64) = |a: &ArcCurve| Some(a.length());
+    Curve(Shared<Curve>) => Number(f64) = |c: &Shared<Curve>| Some(c.length());
+    Curve(Shared<Curve>) => Line(Line) = |c: &Shared<Curve>| match &**c {
+        Curve::Line { line, .. } => Some(*line),
+        _ => None,
+    };
+    Curve(Shared<Curve>) => Circle(Circle) = |c: &Shared<Curve>| match &**c {
+        Curve::Circle { circle, .. } => Some(*circle),
+        _ => None,
+    };
+    Curve(Shared<Curve>) => Arc(ArcCurve) = |c: &Shared<Curve>| match &**c {
+        Curve::Arc { arc, .. } => Some(*arc),
+        _ => None,
+    };
+    Box(OrientedBox) => Text(String) = |b: &OrientedBox| Some(format_value(&Value::Box(*b)));
+    Line(Line) => Text(String) = |l: &Line| Some(format_value(&Value::Line(*l)));
+    Circle(Circle) => Text(String) = |c: &Circle| Some(format_value(&Value::Circle(*c)));
+    Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_value(&Value::Arc(*a)));
+    Curve(Shared<Curve>) => Text(String) = |c: &Shared<Curve>| Some(format_value(&Value::Curve(c.clone())));
+    Surface(Shared<NurbsSurface>) => Text(String) =
+        |s: &Shared<NurbsSurface>| Some(format_value(&Value::Surface(s.clone())));
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use locus_kernel::Transform;
+
+    fn line() -> Line {
+        Line::new(Point3::ORIGIN, Point3::new(3.0, 4.0, 0.0))
+    }
+
+    fn circle() -> Circle {
+        Circle::new(Plane::WORLD_XY, 2.0).unwrap()
+    }
+
+    fn arc() -> ArcCurve {
+        ArcCurve::new(circle(), Interval::new(0.0, 1.0)).unwrap()
+    }
 
     fn text(s: &str) -> Value {
         Value::Text(s.to_owned())
@@ -334,6 +379,23 @@ mod tests {
             DataType::Plane => vec![Value::Plane(Plane::WORLD_YZ)],
             DataType::Domain => vec![Value::Domain(Interval::new(1.0, 4.0))],
             DataType::Transform => vec![Value::Transform(Transform::IDENTITY)],
+            DataType::Box => vec![Value::Box(OrientedBox::new(
+                Plane::WORLD_XY,
+                Interval::UNIT,
+                Interval::UNIT,
+                Interval::UNIT,
+            ))],
+            DataType::Line => vec![Value::Line(line())],
+            DataType::Circle => vec![Value::Circle(circle())],
+            DataType::Arc => vec![Value::Arc(arc())],
+            DataType::Curve => vec![
+                Value::Curve(Shared::new(Curve::from(line()))),
+                Value::Curve(Shared::new(Curve::from(circle()))),
+                Value::Curve(Shared::new(Curve::from(arc()))),
+            ],
+            DataType::Surface => vec![Value::Surface(Shared::new(
+                NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
+            ))],
             DataType::Generic => Vec::new(),
         }
     }

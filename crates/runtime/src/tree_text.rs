@@ -97,6 +97,7 @@ fn write_item(out: &mut String, value: &Value) {
         }
         Value::Plane(p) => out.push_str(&format_plane(p)),
         Value::Transform(t) => out.push_str(&format_transform(t)),
+        other => write_quoted(out, &crate::value_text::format_value(other)),
     }
 }
 

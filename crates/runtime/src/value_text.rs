@@ -158,6 +158,52 @@ pub fn format_value(value: &Value) -> String {
         Value::Plane(p) => format_plane(p),
         Value::Domain(d) => format_domain(*d),
         Value::Transform(t) => format_transform(t),
+        Value::Box(b) => format!(
+            "Box (O:{} sizes {} × {} × {})",
+            format_point(b.plane.origin),
+            format_number(b.x.length().abs()),
+            format_number(b.y.length().abs()),
+            format_number(b.z.length().abs())
+        ),
+        Value::Line(l) => format!("Line ({} to {})", format_point(l.from), format_point(l.to)),
+        Value::Circle(c) => format!(
+            "Circle (R:{} at {})",
+            format_number(c.radius),
+            format_point(c.plane.origin)
+        ),
+        Value::Arc(a) => format!(
+            "Arc (R:{} at {}, angle {})",
+            format_number(a.circle.radius),
+            format_point(a.circle.plane.origin),
+            format_domain(a.angle)
+        ),
+        Value::Curve(c) => {
+            let d = c.domain();
+            format!(
+                "{} (degree {}, domain {})",
+                curve_kind(c),
+                c.degree(),
+                format_domain(Interval::new(d.t0, d.t1))
+            )
+        }
+        Value::Surface(s) => format!(
+            "NURBS Surface (degree {}×{}, {}×{} points)",
+            s.degree_u(),
+            s.degree_v(),
+            s.count_u(),
+            s.count_v()
+        ),
+    }
+}
+
+/// The kind of a curve as Rhino names it.
+pub fn curve_kind(c: &locus_kernel::Curve) -> &'static str {
+    use locus_kernel::Curve;
+    match c {
+        Curve::Line { .. } => "Line Curve",
+        Curve::Polyline { .. } => "Polyline Curve",
+        Curve::Circle { .. } | Curve::Arc { .. } => "Arc Curve",
+        Curve::Nurbs(_) => "NURBS Curve",
     }
 }
 
