@@ -4,20 +4,31 @@
 //! host) in a `NodeRegistry` value.
 
 mod cast;
+mod check;
+mod diagnostic;
+mod dot;
+mod format;
 mod graph;
+mod literal;
 mod node;
 mod path;
 mod plan;
 mod registry;
 mod solve;
+mod syntax;
 mod tree;
 mod value;
 
 pub use crate::cast::can_cast;
+pub use crate::check::{Checked, check, check_text};
+pub use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+pub use crate::dot::to_dot;
+pub use crate::format::{Document, write_graph};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
 };
+pub use crate::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
     VariableInputs,
