@@ -75,6 +75,8 @@ struct Checker<'a> {
     resolved: Vec<Option<Resolved<'a>>>,
     /// Per node and input: the parsed value.
     values: Vec<Vec<Option<DataTree>>>,
+    /// Per node and input: whether a value was given (even one that failed to parse).
+    values_given: Vec<Vec<bool>>,
     /// Per node and input: the sources, in wire order.
     sources: Vec<Vec<Vec<(usize, usize)>>>,
     /// Per node and input: the modifiers.
@@ -97,6 +99,7 @@ impl<'a> Checker<'a> {
             index: HashMap::new(),
             resolved: Vec::new(),
             values: Vec::new(),
+            values_given: Vec::new(),
             sources: Vec::new(),
             modifiers: Vec::new(),
             settings: Vec::new(),
@@ -191,12 +194,7 @@ impl<'a> Checker<'a> {
             let resolved = match self.registry.get(&node.node_type) {
                 Some(node_type) => Some(self.resolve_inputs(i, node_type)),
                 None => {
-                    let suggestions = self
-                        .registry
-                        .suggestions(&node.node_type)
-                        .into_iter()
-                        .map(str::to_owned)
-                        .collect();
+                    let suggestions = suggestions(self.registry, &node.node_type);
                     let at = self
                         .map()
                         .and_then(|m| m.nodes.get(i))
@@ -216,6 +214,7 @@ impl<'a> Checker<'a> {
             let n_settings = resolved.as_ref().map_or(0, |r| r.node_type.settings.len());
             self.resolved.push(resolved);
             self.values.push(vec![None; n_inputs]);
+            self.values_given.push(vec![false; n_inputs]);
             self.sources.push(vec![Vec::new(); n_inputs]);
             self.modifiers.push(vec![Vec::new(); n_inputs]);
             self.settings.push(vec![None; n_settings]);
@@ -249,6 +248,7 @@ impl<'a> Checker<'a> {
                 inputs: node_type.resolve_inputs(None),
             };
         }
+        let mut kept: Vec<String> = Vec::with_capacity(names.len());
         for (k, name) in names.iter().enumerate() {
             let message = if name.trim().is_empty() {
                 Some("empty input name".to_owned())
@@ -265,11 +265,14 @@ impl<'a> Checker<'a> {
                     },
                     name_at(k),
                 );
+            } else {
+                kept.push(name.clone());
             }
         }
+        // Bad names are left out so that they cause no further errors.
         Resolved {
             node_type,
-            inputs: node_type.resolve_inputs(Some(names)),
+            inputs: node_type.resolve_inputs(Some(&kept)),
         }
     }
 
@@ -324,7 +327,7 @@ impl<'a> Checker<'a> {
             let Some(input) = self.resolved[i].as_ref().map(|r| r.inputs[k].clone()) else {
                 continue;
             };
-            if self.values[i][k].is_some() {
+            if self.values_given[i][k] {
                 self.error(
                     DiagnosticKind::Malformed {
                         message: format!(
@@ -336,6 +339,7 @@ impl<'a> Checker<'a> {
                 );
                 continue;
             }
+            self.values_given[i][k] = true;
             let data_type = input.data_type;
             match self.parse_literal(literal, span.map(|s| &s[1]), |n| {
                 tree_from_node(n, data_type)
@@ -661,7 +665,7 @@ impl<'a> Checker<'a> {
             let mut found = Vec::new();
             for (k, port) in r.inputs.iter().enumerate() {
                 let wired = !self.sources[i][k].is_empty();
-                let has_value = self.values[i][k].is_some();
+                let has_value = self.values_given[i][k];
                 if wired && has_value {
                     let at = node
                         .values
@@ -876,6 +880,27 @@ impl<'a> Checker<'a> {
             outputs,
         }
     }
+}
+
+/// Registered type ids close to `id`: those the registry suggests by edit distance, then
+/// those that start with `id` (`vector.dot` → `vector.dot_product`) or whose name after the
+/// category is `id` (`dot_product` → `vector.dot_product`); at most three.
+fn suggestions(registry: &NodeRegistry, id: &str) -> Vec<String> {
+    let mut out: Vec<String> = registry
+        .suggestions(id)
+        .into_iter()
+        .map(str::to_owned)
+        .collect();
+    if !id.is_empty() {
+        for t in registry.iter() {
+            let name = t.id.rsplit('.').next().unwrap_or(&t.id);
+            if (t.id.starts_with(id) || name == id) && !out.contains(&t.id) {
+                out.push(t.id.clone());
+            }
+        }
+    }
+    out.truncate(3);
+    out
 }
 
 /// Whether a modifier applies to an input of type `data_type`.
