@@ -7,7 +7,7 @@
 //! evaluation order never depends on hashing or on petgraph's traversal order.
 
 use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap, VecDeque};
+use std::collections::{BinaryHeap, HashMap, HashSet, VecDeque};
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -77,6 +77,8 @@ struct Checker<'a> {
     values: Vec<Vec<Option<DataTree>>>,
     /// Per node and input: whether a value was given (even one that failed to parse).
     values_given: Vec<Vec<bool>>,
+    /// Per node and input: whether a wire ends there (even one with a bad source or cast).
+    wire_ends: Vec<Vec<bool>>,
     /// Per node and input: the sources, in wire order.
     sources: Vec<Vec<Vec<(usize, usize)>>>,
     /// Per node and input: the modifiers.
@@ -100,6 +102,7 @@ impl<'a> Checker<'a> {
             resolved: Vec::new(),
             values: Vec::new(),
             values_given: Vec::new(),
+            wire_ends: Vec::new(),
             sources: Vec::new(),
             modifiers: Vec::new(),
             settings: Vec::new(),
@@ -215,6 +218,7 @@ impl<'a> Checker<'a> {
             self.resolved.push(resolved);
             self.values.push(vec![None; n_inputs]);
             self.values_given.push(vec![false; n_inputs]);
+            self.wire_ends.push(vec![false; n_inputs]);
             self.sources.push(vec![Vec::new(); n_inputs]);
             self.modifiers.push(vec![Vec::new(); n_inputs]);
             self.settings.push(vec![None; n_settings]);
@@ -553,7 +557,7 @@ impl<'a> Checker<'a> {
 
     fn wires(&mut self) {
         let graph = self.graph;
-        let mut seen: Vec<(usize, usize, usize, usize)> = Vec::new();
+        let mut seen: HashSet<(usize, usize, usize, usize)> = HashSet::new();
         for (w, wire) in graph.wires.iter().enumerate() {
             let spans = self.map().and_then(|m| m.wires.get(w));
             let from_at = spans.map(|s| s[0].start);
@@ -571,6 +575,9 @@ impl<'a> Checker<'a> {
                 &format!("the end of {name}"),
                 to_at,
             );
+            if let Some((b, inp)) = to {
+                self.wire_ends[b][inp] = true;
+            }
             let (Some((a, out)), Some((b, inp))) = (from, to) else {
                 continue;
             };
@@ -591,7 +598,7 @@ impl<'a> Checker<'a> {
                 );
                 continue;
             }
-            if seen.contains(&(a, out, b, inp)) {
+            if !seen.insert((a, out, b, inp)) {
                 self.warning(
                     DiagnosticKind::DuplicateWire {
                         from: wire.from.to_string(),
@@ -601,7 +608,6 @@ impl<'a> Checker<'a> {
                 );
                 continue;
             }
-            seen.push((a, out, b, inp));
             self.sources[b][inp].push((a, out));
             self.edges.push((a, b));
         }
@@ -664,7 +670,7 @@ impl<'a> Checker<'a> {
             let spans = self.map().and_then(|m| m.nodes.get(i));
             let mut found = Vec::new();
             for (k, port) in r.inputs.iter().enumerate() {
-                let wired = !self.sources[i][k].is_empty();
+                let wired = self.wire_ends[i][k];
                 let has_value = self.values_given[i][k];
                 if wired && has_value {
                     let at = node

@@ -246,7 +246,7 @@ impl Reader<'_> {
             Kind::Struct(Some(n), fields) if n == struct_name => fields.as_slice(),
             Kind::Tuple(None, v) if v.is_empty() => &[],
             _ => {
-                self.expect_kind(node, &format!("a struct `(field: value, …)`"), context);
+                self.expect_kind(node, "a struct `(field: value, …)`", context);
                 return None;
             }
         };

@@ -23,8 +23,8 @@
 //! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `ZX` |
 //! | Transform | `((a, b, c, d), (e, f, g, h), (i, j, k, l), (m, n, o, p))`: four rows |
 //!
-//! Any item may carry its type's name as a tag, `Vector(1, 2, 3)`; a tag must name the port's
-//! type. On a `Generic` port the type is taken from the tag, or else from the shape: an integer
+//! Any item may carry its type's name as a tag, `Vector(1, 2, 3)`, `Integer(3)`, `Text("a")`;
+//! a tag must name the port's type. On a `Generic` port the type is taken from the tag, or else from the shape: an integer
 //! without decimal point is an Integer, other numbers are Numbers, `(x, y, z)` is a Point,
 //! `(a, b)` a Domain, three triples a Plane, four quadruples a Transform. The writer tags
 //! vectors in generic trees so that they read back as vectors.
@@ -245,6 +245,13 @@ pub(crate) fn parse_item(node: &Node, data_type: DataType) -> Result<Option<Valu
         let tagged = DataType::from_name(tag).filter(|t| *t != DataType::Generic);
         return match tagged {
             Some(t) if t == data_type || data_type == DataType::Generic => {
+                // `Number(1)`, `Text("a")`, `Plane(XY)`: the tag wraps the item itself.
+                if let [item] = items.as_slice()
+                    && (!matches!(item.kind, Kind::Number(_))
+                        || matches!(t, DataType::Number | DataType::Integer))
+                {
+                    return parse_item(item, t);
+                }
                 let untagged = Node {
                     kind: Kind::Tuple(None, items.clone()),
                     span: node.span.clone(),
