@@ -829,7 +829,7 @@ impl<'a> Checker<'a> {
                 .map(|(k, port)| {
                     let value = values[i][k]
                         .take()
-                        .or_else(|| crate::node::default_tree(&port));
+                        .or_else(|| port.default.clone().map(DataTree::from_value));
                     PlanInput {
                         port,
                         sources: std::mem::take(&mut sources[i][k]),

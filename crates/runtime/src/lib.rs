@@ -3,13 +3,18 @@
 //! The runtime names no concrete node: node types are registered by the node library (or by a
 //! host) in a `NodeRegistry` value.
 
+mod call;
 mod cast;
 mod check;
+mod collect;
 mod diagnostic;
 mod dot;
+mod evaluator;
 mod format;
 mod graph;
+mod iterate;
 mod literal;
+mod message;
 mod node;
 mod path;
 mod plan;
@@ -19,16 +24,19 @@ mod syntax;
 mod tree;
 mod value;
 
+pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::cast::can_cast;
 pub use crate::check::{Checked, check, check_text};
 pub use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
 pub use crate::dot::to_dot;
+pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::format::{Document, write_graph};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
 };
 pub use crate::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal};
+pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
     VariableInputs,
@@ -36,6 +44,6 @@ pub use crate::node::{
 pub use crate::path::{PathParseError, TreePath};
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
-pub use crate::solve::Solve;
+pub use crate::solve::{ListView, Solve};
 pub use crate::tree::{Branch, DataTree};
 pub use crate::value::{Column, DataType, Item, Shared, Value};

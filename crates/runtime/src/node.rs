@@ -2,7 +2,7 @@
 //!
 //! A node type is declared once, with a builder:
 //!
-//! ```ignore
+//! ```
 //! use locus_runtime::{Access, DataType, NodeType, Port};
 //! let dot = NodeType::new("vector.dot_product", "Dot Product", "DProd", "Vector")
 //!     .description("Computes the dot product of two vectors.")
@@ -22,7 +22,7 @@ use std::any::Any;
 use std::fmt;
 use std::sync::Arc;
 
-use crate::{DataTree, DataType, Item, Solve, Value};
+use crate::{DataType, Item, Solve, Value};
 
 /// How a port receives its data in one call of the node's solve function
 /// (Grasshopper's `GH_ParamAccess`).
@@ -378,9 +378,4 @@ fn variable_port(template: &Port, name: &str) -> Port {
     p.name = name.to_owned();
     p.nickname = name.to_owned();
     p
-}
-
-/// A tree holding one value, for port defaults.
-pub(crate) fn default_tree(port: &Port) -> Option<DataTree> {
-    port.default.clone().map(DataTree::from_value)
 }
