@@ -9,7 +9,7 @@
 use std::ops::Range;
 
 use crate::diagnostic::{Diagnostic, DiagnosticKind, Location};
-use crate::syntax::{self, Field, Kind, Node};
+use crate::syntax::{self, Field, Kind, LineIndex, Node};
 use crate::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Matching, Modifier, NodeId,
     PortRef, Wire,
@@ -42,6 +42,7 @@ const NODE_FIELDS: &[&str] = &[
 pub struct Document {
     graph: Graph,
     source: String,
+    lines: LineIndex,
     pub(crate) map: SourceMap,
 }
 
@@ -91,6 +92,7 @@ impl Document {
     pub fn parse(text: &str) -> Result<Self, Vec<Diagnostic>> {
         let mut reader = Reader {
             text,
+            lines: LineIndex::new(text),
             errors: Vec::new(),
         };
         let root = match syntax::parse(text) {
@@ -109,6 +111,7 @@ impl Document {
             Some(graph) if reader.errors.is_empty() => Ok(Self {
                 graph,
                 source: text.to_owned(),
+                lines: reader.lines,
                 map,
             }),
             _ => Err(reader.errors),
@@ -132,7 +135,7 @@ impl Document {
 
     /// The location of a byte offset in the source.
     pub(crate) fn location(&self, offset: usize) -> Location {
-        location(&self.source, offset)
+        location(&self.lines, &self.source, offset)
     }
 
     /// The source text with the `expected` section replaced by `expected` (added before the
@@ -200,8 +203,8 @@ impl Graph {
 }
 
 /// The 1-based line and column of a byte offset.
-pub(crate) fn location(text: &str, offset: usize) -> Location {
-    let (line, column) = syntax::line_column(text, offset);
+fn location(lines: &LineIndex, text: &str, offset: usize) -> Location {
+    let (line, column) = lines.line_column(text, offset);
     Location {
         line,
         column,
@@ -211,13 +214,14 @@ pub(crate) fn location(text: &str, offset: usize) -> Location {
 
 struct Reader<'a> {
     text: &'a str,
+    lines: LineIndex,
     errors: Vec<Diagnostic>,
 }
 
 impl Reader<'_> {
     fn diagnostic(&self, kind: DiagnosticKind, span: Range<usize>) -> Diagnostic {
         let mut d = Diagnostic::error(kind);
-        d.location = Some(location(self.text, span.start));
+        d.location = Some(location(&self.lines, self.text, span.start));
         d
     }
 

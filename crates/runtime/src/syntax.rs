@@ -667,17 +667,40 @@ pub(crate) fn write_broken(node: &Node, indent: usize, out: &mut String) {
     out.push(close);
 }
 
-/// The 1-based line and column (in characters) of a byte offset in `text`.
-pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
-    let mut offset = offset.min(text.len());
-    while !text.is_char_boundary(offset) {
-        offset -= 1;
+/// The start offsets of the lines of a text, to turn byte offsets into lines and columns in
+/// logarithmic time (a file with thousands of diagnostics must not take quadratic time).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct LineIndex {
+    starts: Vec<usize>,
+}
+
+impl LineIndex {
+    /// Indexes the lines of `text`.
+    pub fn new(text: &str) -> Self {
+        let starts = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Self { starts }
     }
-    let before = &text[..offset];
-    let line = 1 + before.matches('\n').count();
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let column = 1 + before[line_start..].chars().count();
-    (line, column)
+
+    /// The 1-based line and column (in characters) of a byte offset in `text`, the text this
+    /// index was built from.
+    pub fn line_column(&self, text: &str, offset: usize) -> (usize, usize) {
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let line = self.starts.partition_point(|&s| s <= offset).max(1);
+        let start = self.starts.get(line - 1).copied().unwrap_or(0).min(offset);
+        let column = 1 + text[start..offset].chars().count();
+        (line, column)
+    }
+}
+
+/// The 1-based line and column (in characters) of a byte offset in `text`.
+#[cfg(test)]
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    LineIndex::new(text).line_column(text, offset)
 }
 
 #[cfg(test)]
@@ -783,5 +806,8 @@ mod tests {
         assert_eq!(line_column(text, 3), (2, 1));
         assert_eq!(line_column(text, 6), (2, 3));
         assert_eq!(line_column(text, 99), (2, 4));
+        assert_eq!(line_column(text, 2), (1, 3));
+        assert_eq!(line_column("", 0), (1, 1));
+        assert_eq!(line_column("a\n", 2), (2, 1));
     }
 }
