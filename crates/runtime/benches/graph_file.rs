@@ -39,19 +39,19 @@ fn graph_file(c: &mut Criterion) {
     let doc = Document::parse(&text).unwrap();
     assert_eq!(doc.graph().to_ron(), text);
     c.bench_function("read 1000-node graph", |b| {
-        b.iter(|| Document::parse(black_box(&text)).unwrap())
+        b.iter(|| Document::parse(black_box(&text)).unwrap());
     });
     c.bench_function("check 1000-node graph", |b| {
-        b.iter(|| doc.check(black_box(&registry)).unwrap())
+        b.iter(|| doc.check(black_box(&registry)).unwrap());
     });
     // A value on every wired input: 999 warnings, each located in the file.
     let warned = Document::parse(&text.replace("{\"B\"", "{\"A\": 1, \"B\"")).unwrap();
     assert_eq!(warned.check(&registry).unwrap().warnings.len(), 999);
     c.bench_function("check 1000-node graph with 999 warnings", |b| {
-        b.iter(|| warned.check(black_box(&registry)).unwrap())
+        b.iter(|| warned.check(black_box(&registry)).unwrap());
     });
     c.bench_function("write 1000-node graph", |b| {
-        b.iter(|| black_box(doc.graph()).to_ron())
+        b.iter(|| black_box(doc.graph()).to_ron());
     });
 }
 
