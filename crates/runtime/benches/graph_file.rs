@@ -11,7 +11,9 @@ fn chain(n: usize) -> String {
     let mut text = String::from("(\n    format: 1,\n    nodes: [\n");
     for i in 0..n {
         text.push_str(&format!(
-            "        (id: \"add{i}\", type: \"math.addition\", values: {{\"B\": [{i}.5, 2, 3]}}),\n"
+            "        (id: \"add{i}\", type: \"math.addition\", values: {{{}\"B\": [{i}.5, 2, 3]}}),\n",
+            // The first node has no wire into A, so it needs a value there.
+            if i == 0 { "\"A\": 0.5, " } else { "" },
         ));
     }
     text.push_str("    ],\n    wires: [\n");
