@@ -1,1 +1,3 @@
 //! The node library of locus.
+
+pub mod expression;
