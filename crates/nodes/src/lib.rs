@@ -1,3 +1,4 @@
 //! The node library of locus.
 
 pub mod expression;
+pub mod maths;

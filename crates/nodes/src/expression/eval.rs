@@ -245,8 +245,8 @@ impl Program {
     }
 }
 
-/// Why a binary operation on finite operands gave an invalid number.
-fn binary_warning(op: BinaryOp, lhs: &Operand, rhs: &Operand) -> String {
+/// Why a binary operation on finite operands gave an invalid number (for warnings).
+pub(crate) fn binary_warning(op: BinaryOp, lhs: &Operand, rhs: &Operand) -> String {
     let zero_divisor = rhs.as_number() == Some(0.0);
     match op {
         BinaryOp::Divide if zero_divisor => "division by zero".to_owned(),

@@ -31,6 +31,7 @@ use std::fmt;
 
 use locus_runtime::DataType;
 
+pub(crate) use self::eval::binary_warning;
 pub use self::eval::{EvalFailure, Evaluation, Program};
 pub use self::functions::{FUNCTIONS, Function};
 pub use self::operand::{BinaryOp, Operand, UnaryOp};
@@ -62,6 +63,24 @@ impl fmt::Display for ParseError {
 }
 
 impl std::error::Error for ParseError {}
+
+impl From<EvalError> for locus_runtime::NodeError {
+    fn from(e: EvalError) -> Self {
+        Self(e.to_string())
+    }
+}
+
+impl From<EvalFailure> for locus_runtime::NodeError {
+    fn from(e: EvalFailure) -> Self {
+        Self(e.to_string())
+    }
+}
+
+impl From<ParseError> for locus_runtime::NodeError {
+    fn from(e: ParseError) -> Self {
+        Self(e.to_string())
+    }
+}
 
 /// Why evaluating a formula (or applying an operator node) failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
