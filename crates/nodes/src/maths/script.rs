@@ -95,17 +95,20 @@ pub fn expression() -> NodeType {
         })
 }
 
+/// A formula and what parsing it gave.
+type CachedFormula = (String, Result<Arc<Program>, ParseError>);
+
 /// The prepared state of an Evaluate node: its variable names and the formulas seen so far.
 #[derive(Debug)]
 struct EvaluateState {
     names: Vec<String>,
-    cache: RwLock<Vec<(String, Result<Arc<Program>, ParseError>)>>,
+    cache: RwLock<Vec<CachedFormula>>,
 }
 
 impl EvaluateState {
     /// The compiled formula for `source`, from the cache or parsed now.
     fn program(&self, source: &str) -> Result<Arc<Program>, ParseError> {
-        let cached = |cache: &[(String, Result<Arc<Program>, ParseError>)]| {
+        let cached = |cache: &[CachedFormula]| {
             cache
                 .iter()
                 .find(|(s, _)| s == source)
