@@ -65,10 +65,24 @@ pub enum Error {
     /// A parameter or interval outside what the operation accepts.
     #[error("{0}")]
     InvalidInput(String),
+    /// The geometry is degenerate where the operation needs it not to be, such as a surface
+    /// whose partial derivatives are zero or parallel at the requested parameters.
+    #[error("{what} is degenerate")]
+    Degenerate {
+        /// What is degenerate, such as `"surface frame"`.
+        what: &'static str,
+    },
     /// An iterative method did not reach its tolerance.
     #[error("{what} did not converge")]
     NoConvergence {
         /// The computation.
+        what: &'static str,
+    },
+    /// A transform collapsed a frame or a box so that the result has no well-defined axes, as
+    /// when a plane is projected onto a plane perpendicular to it.
+    #[error("{what} is degenerate after the transform")]
+    DegenerateTransformResult {
+        /// What was transformed, such as `"plane"`.
         what: &'static str,
     },
 }

@@ -19,18 +19,67 @@
 //! assert_eq!(Vector3::new(4.0, 3.0, 0.0).length(), 5.0);
 //! ```
 
+mod arc;
+mod arc_length;
 pub mod basis;
+mod bezier;
+mod bounding_box;
+mod circle;
+mod continuity;
+mod curve;
+mod curve_closest_point;
+mod curve_measure;
 mod error;
+mod hermite;
+mod interpolate;
 mod interval;
+mod line;
+mod nurbs_curve;
+mod nurbs_curve_batch;
+mod nurbs_curve_create;
+mod nurbs_curve_edit;
+mod nurbs_surface;
+mod nurbs_surface_edit;
+mod oriented_box;
 mod plane;
 mod point;
+mod polyline;
+mod surface_closest_point;
+mod surface_curvature;
+mod surface_derivatives;
+mod surface_direction;
+mod surface_forms;
+mod surface_grid;
+mod surface_isocurve;
+mod surface_normal;
 pub mod tolerance;
 mod transform;
 mod vector;
 
+pub use crate::arc::Arc;
+pub use crate::bezier::Bezier;
+pub use crate::bounding_box::BoundingBox;
+pub use crate::circle::Circle;
+pub use crate::continuity::{
+    Continuity, ContinuityTolerances, continuity, continuity_with_tolerances,
+};
+pub use crate::curve::Curve;
+pub use crate::curve_closest_point::CurveClosestPoint;
 pub use crate::error::{Error, Result};
+pub use crate::hermite::CubicHermite;
+pub use crate::interpolate::{EndTangents, KnotStyle};
 pub use crate::interval::Interval;
+pub use crate::line::Line;
+pub use crate::nurbs_curve::NurbsCurve;
+pub use crate::nurbs_surface::NurbsSurface;
+pub use crate::oriented_box::OrientedBox;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
+pub use crate::polyline::Polyline;
+pub use crate::surface_closest_point::SurfaceClosestPoint;
+pub use crate::surface_curvature::SurfaceCurvature;
+pub use crate::surface_derivatives::SurfaceDerivatives;
+pub use crate::surface_direction::{SurfaceDirection, SurfaceSide};
+pub use crate::surface_forms::{Cone, Cylinder, Sphere};
 pub use crate::transform::Transform;
-pub use crate::vector::Vector3;
+pub use crate::vector::{Parallelism, Vector3};

@@ -9,7 +9,10 @@
 use std::fmt;
 use std::sync::Arc;
 
-use locus_kernel::{Interval, Plane, Point3, Transform, Vector3};
+use locus_kernel::{
+    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Transform, Vector3,
+};
 
 /// A Rust type that can be stored as an item of a data tree.
 ///
@@ -255,6 +258,44 @@ value_types! {
     Domain(Interval) = "Domain", placeholder Interval::UNIT;
     /// A 4×4 transformation.
     Transform(Transform) = "Transform", placeholder Transform::IDENTITY;
+    /// An oriented box (Grasshopper's Box: a plane and three intervals).
+    Box(OrientedBox) = "Box", placeholder OrientedBox::new(
+        Plane::WORLD_XY, Interval::UNIT, Interval::UNIT, Interval::UNIT
+    );
+    /// A line segment.
+    Line(Line) = "Line", placeholder Line::new(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0));
+    /// A circle.
+    Circle(Circle) = "Circle", placeholder Circle { plane: Plane::WORLD_XY, radius: 1.0 };
+    /// A circular arc.
+    Arc(ArcCurve) = "Arc", placeholder ArcCurve {
+        circle: Circle { plane: Plane::WORLD_XY, radius: 1.0 },
+        angle: Interval::new(0.0, std::f64::consts::FRAC_PI_2),
+    };
+    /// A curve of any kind (line, polyline, circle, arc, NURBS), shared.
+    Curve(Shared<Curve>) = "Curve", placeholder placeholder_curve();
+    /// A NURBS surface, shared.
+    Surface(Shared<NurbsSurface>) = "Surface", placeholder placeholder_surface();
+}
+
+/// The curve stored under null curve items: a unit line.
+fn placeholder_curve() -> Shared<Curve> {
+    static CURVE: std::sync::LazyLock<Shared<Curve>> = std::sync::LazyLock::new(|| {
+        Shared::new(Curve::from(Line::new(
+            Point3::ORIGIN,
+            Point3::new(1.0, 0.0, 0.0),
+        )))
+    });
+    CURVE.clone()
+}
+
+/// The surface stored under null surface items: the unit square of the world XY plane.
+fn placeholder_surface() -> Shared<NurbsSurface> {
+    static SURFACE: std::sync::LazyLock<Shared<NurbsSurface>> = std::sync::LazyLock::new(|| {
+        let square = NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT);
+        // The unit square of World XY is valid by construction.
+        Shared::new(square.unwrap_or_else(|_| unreachable!("the unit square is a valid surface")))
+    });
+    SURFACE.clone()
 }
 
 impl Value {

@@ -1,0 +1,626 @@
+//! The closest point on a surface to a test point (Grasshopper's Pull and Surface Closest
+//! Point): the global minimum of the distance over the whole parameter rectangle.
+//!
+//! The minimum may lie inside the surface, where the segment to the test point is normal to
+//! it, or on a boundary edge, at a corner, or on a crease (an interior knot of full
+//! multiplicity), where no such normal foot exists. The search therefore:
+//!
+//! 1. splits the domain into its polynomial patches (knot spans in `u` × `v`) and orders them by
+//!    a lower bound of their distance, the distance to the bounding box of their control points
+//!    (the convex hull property, valid for positive weights); patches whose bound exceeds the
+//!    best distance found so far are skipped;
+//! 2. samples each remaining patch on a small grid and polishes the best discrete local minima
+//!    with a Newton iteration on `f = ½|S − P|²`, confined to the patch rectangle by an active
+//!    set (a coordinate at a bound whose gradient points outwards is held fixed), with a
+//!    backtracking line search that never lets `f` increase;
+//! 3. searches the four boundary curves and every crease line in one dimension the same way;
+//! 4. evaluates the four corners.
+//!
+//! The smallest distance wins.
+
+use crate::basis::span_index;
+use crate::nurbs_surface::check_parameters;
+use crate::surface_direction::SurfaceDirection;
+use crate::surface_direction::SurfaceSide;
+use crate::{Error, NurbsSurface, Point3, Result};
+
+/// The closest point on a surface to a test point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceClosestPoint {
+    /// The `u` parameter of the closest point.
+    pub u: f64,
+    /// The `v` parameter of the closest point.
+    pub v: f64,
+    /// The closest point, `S(u, v)`.
+    pub point: Point3,
+    /// The distance from the test point to `point`.
+    pub distance: f64,
+}
+
+/// At most this many Newton iterations per start.
+const MAX_ITERATIONS: usize = 64;
+/// At most this many halvings of a step in the line search.
+const MAX_HALVINGS: usize = 40;
+/// At most this many discrete local minima of a patch's sample grid are polished.
+const STARTS_PER_PATCH: usize = 3;
+
+/// A parameter rectangle `[u0, u1] × [v0, v1]`.
+#[derive(Clone, Copy, Debug)]
+struct Rect {
+    u: [f64; 2],
+    v: [f64; 2],
+}
+
+/// The best candidate so far, with its squared distance.
+#[derive(Clone, Copy, Debug)]
+struct Best {
+    u: f64,
+    v: f64,
+    point: Point3,
+    distance_squared: f64,
+}
+
+impl Best {
+    fn offer(&mut self, u: f64, v: f64, point: Point3, distance_squared: f64) {
+        if distance_squared < self.distance_squared {
+            *self = Self {
+                u,
+                v,
+                point,
+                distance_squared,
+            };
+        }
+    }
+}
+
+impl NurbsSurface {
+    /// The point of the surface closest to `test`, searched globally over the whole domain:
+    /// edges, corners and creases included. Where several points are equally close (a test
+    /// point on a sphere's axis, or at its centre) one of them is returned.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] if the test point is not finite.
+    pub fn closest_point(&self, test: Point3) -> Result<SurfaceClosestPoint> {
+        if !test.is_finite() {
+            return Err(Error::NotFinite { what: "test point" });
+        }
+        let breaks_u = self.span_breaks(SurfaceDirection::U);
+        let breaks_v = self.span_breaks(SurfaceDirection::V);
+        let (du, dv) = (self.domain_u(), self.domain_v());
+
+        // 4. The corners, which also seed the best distance.
+        let mut best = Best {
+            u: du.t0,
+            v: dv.t0,
+            point: Point3::ORIGIN,
+            distance_squared: f64::INFINITY,
+        };
+        for u in [du.t0, du.t1] {
+            for v in [dv.t0, dv.t1] {
+                let p = self.point_at(u, v);
+                best.offer(u, v, p, p.distance_squared(test));
+            }
+        }
+
+        // Lower bounds of the distance to each patch.
+        let (nu, nv) = (breaks_u.len() - 1, breaks_v.len() - 1);
+        let mut bounds = Vec::with_capacity(nu * nv);
+        for &start_u in &breaks_u[..nu] {
+            let su = span_index(self.degree_u(), self.knots_u(), start_u);
+            for &start_v in &breaks_v[..nv] {
+                let sv = span_index(self.degree_v(), self.knots_v(), start_v);
+                bounds.push(box_distance_squared(self.span_points(su, sv), test));
+            }
+        }
+
+        // 1 and 2. The patches, nearest bound first.
+        let mut order: Vec<usize> = (0..nu * nv).collect();
+        order.sort_by(|&x, &y| bounds[x].total_cmp(&bounds[y]));
+        let samples_u = samples_per_span(self.degree_u());
+        let samples_v = samples_per_span(self.degree_v());
+        let mut grid = vec![0.0; samples_u * samples_v];
+        for &index in &order {
+            if bounds[index] > best.distance_squared {
+                break;
+            }
+            let (a, b) = (index / nv, index % nv);
+            let rect = Rect {
+                u: [breaks_u[a], breaks_u[a + 1]],
+                v: [breaks_v[b], breaks_v[b + 1]],
+            };
+            self.search_patch(test, rect, [samples_u, samples_v], &mut grid, &mut best);
+        }
+
+        // 3. Boundary curves and creases, one dimension at a time.
+        for direction in [SurfaceDirection::U, SurfaceDirection::V] {
+            let (fixed_breaks, free_breaks) = match direction {
+                SurfaceDirection::U => (&breaks_u, &breaks_v),
+                SurfaceDirection::V => (&breaks_v, &breaks_u),
+            };
+            let domain = self.domain(direction);
+            let mut lines: Vec<(f64, usize)> = Vec::new();
+            let (start_side, end_side) = match direction {
+                SurfaceDirection::U => (SurfaceSide::West, SurfaceSide::East),
+                SurfaceDirection::V => (SurfaceSide::South, SurfaceSide::North),
+            };
+            if !self.is_singular(start_side) {
+                lines.push((domain.t0, 0));
+            }
+            if !self.is_singular(end_side) {
+                lines.push((domain.t1, fixed_breaks.len() - 2));
+            }
+            for k in self.c0_knots(direction) {
+                let patch = fixed_breaks.partition_point(|&x| x <= k) - 1;
+                lines.push((k, patch.min(fixed_breaks.len() - 2)));
+            }
+            let samples = samples_per_span(self.degree(direction.other()));
+            for (fixed, fixed_patch) in lines {
+                for c in 0..free_breaks.len() - 1 {
+                    let bound = match direction {
+                        SurfaceDirection::U => bounds[fixed_patch * nv + c],
+                        SurfaceDirection::V => bounds[c * nv + fixed_patch],
+                    };
+                    if bound > best.distance_squared {
+                        continue;
+                    }
+                    let range = [free_breaks[c], free_breaks[c + 1]];
+                    self.search_line(test, direction, fixed, range, samples, &mut best);
+                }
+            }
+        }
+
+        Ok(SurfaceClosestPoint {
+            u: best.u,
+            v: best.v,
+            point: best.point,
+            distance: best.distance_squared.sqrt(),
+        })
+    }
+
+    /// The closest point to `test` within the parameter rectangle `u_range × v_range` (each
+    /// increasing and inside the domain), searched in the same global way but without the
+    /// pruning by patches: a sampled grid of `8 × 8` points per span, Newton polish, sides and
+    /// corners of the rectangle.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for non-finite input, [`Error::InvalidInput`] for ranges that are
+    /// not increasing.
+    pub fn closest_point_in(
+        &self,
+        test: Point3,
+        u_range: [f64; 2],
+        v_range: [f64; 2],
+    ) -> Result<SurfaceClosestPoint> {
+        if !test.is_finite() {
+            return Err(Error::NotFinite { what: "test point" });
+        }
+        check_parameters(u_range[0], v_range[0])?;
+        check_parameters(u_range[1], v_range[1])?;
+        if !(u_range[0] <= u_range[1] && v_range[0] <= v_range[1]) {
+            return Err(Error::InvalidInput(
+                "closest point ranges must be increasing".into(),
+            ));
+        }
+        let rect = Rect {
+            u: u_range,
+            v: v_range,
+        };
+        let mut best = Best {
+            u: u_range[0],
+            v: v_range[0],
+            point: Point3::ORIGIN,
+            distance_squared: f64::INFINITY,
+        };
+        for u in u_range {
+            for v in v_range {
+                let p = self.point_at(u, v);
+                best.offer(u, v, p, p.distance_squared(test));
+            }
+        }
+        let samples = [
+            samples_per_span(self.degree_u()),
+            samples_per_span(self.degree_v()),
+        ];
+        let mut grid = vec![0.0; samples[0] * samples[1]];
+        self.search_patch(test, rect, samples, &mut grid, &mut best);
+        for (direction, fixed_range, free_range) in [
+            (SurfaceDirection::U, u_range, v_range),
+            (SurfaceDirection::V, v_range, u_range),
+        ] {
+            let n = samples_per_span(self.degree(direction.other()));
+            for fixed in fixed_range {
+                self.search_line(test, direction, fixed, free_range, n, &mut best);
+            }
+        }
+        Ok(SurfaceClosestPoint {
+            u: best.u,
+            v: best.v,
+            point: best.point,
+            distance: best.distance_squared.sqrt(),
+        })
+    }
+
+    /// Samples one patch and polishes its best discrete local minima.
+    fn search_patch(
+        &self,
+        test: Point3,
+        rect: Rect,
+        [nu, nv]: [usize; 2],
+        grid: &mut [f64],
+        best: &mut Best,
+    ) {
+        let param = |range: [f64; 2], k: usize, n: usize| {
+            let s = k as f64 / (n - 1) as f64;
+            (1.0 - s) * range[0] + s * range[1]
+        };
+        for i in 0..nu {
+            let u = param(rect.u, i, nu);
+            for j in 0..nv {
+                let v = param(rect.v, j, nv);
+                grid[i * nv + j] = self.point_at(u, v).distance_squared(test);
+            }
+        }
+        let mut starts: Vec<(f64, usize, usize)> = Vec::new();
+        for i in 0..nu {
+            for j in 0..nv {
+                let f = grid[i * nv + j];
+                let mut is_min = true;
+                for (di, dj) in [
+                    (-1, -1),
+                    (-1, 0),
+                    (-1, 1),
+                    (0, -1),
+                    (0, 1),
+                    (1, -1),
+                    (1, 0),
+                    (1, 1),
+                ] {
+                    let (ni, nj) = (i as isize + di, j as isize + dj);
+                    if ni >= 0 && nj >= 0 && (ni as usize) < nu && (nj as usize) < nv {
+                        let g = grid[ni as usize * nv + nj as usize];
+                        // Strictly smaller neighbours before, smaller-or-equal after: one start
+                        // per plateau.
+                        if g < f || (g == f && (di, dj) < (0, 0)) {
+                            is_min = false;
+                            break;
+                        }
+                    }
+                }
+                if is_min {
+                    starts.push((f, i, j));
+                }
+            }
+        }
+        starts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for &(_, i, j) in starts.iter().take(STARTS_PER_PATCH) {
+            let (u, v) = (param(rect.u, i, nu), param(rect.v, j, nv));
+            self.polish_2d(test, u, v, rect, best);
+        }
+    }
+
+    /// Newton iteration on `½|S(u, v) − P|²` inside `rect`, with an active set and a line
+    /// search; offers the result to `best`.
+    fn polish_2d(&self, test: Point3, mut u: f64, mut v: f64, rect: Rect, best: &mut Best) {
+        let tol_u = 4.0 * f64::EPSILON * (rect.u[0].abs().max(rect.u[1].abs()) + 1.0);
+        let tol_v = 4.0 * f64::EPSILON * (rect.v[0].abs().max(rect.v[1].abs()) + 1.0);
+        let mut d = self.derivatives_unchecked(u, v, 2);
+        let mut r = d.point - test;
+        let mut f = r.length_squared();
+        for _ in 0..MAX_ITERATIONS {
+            let gu = r.dot(d.du);
+            let gv = r.dot(d.dv);
+            let e = d.du.dot(d.du);
+            let fm = d.du.dot(d.dv);
+            let g = d.dv.dot(d.dv);
+            let huu = e + r.dot(d.duu);
+            let huv = fm + r.dot(d.duv);
+            let hvv = g + r.dot(d.dvv);
+            let fix_u = (u <= rect.u[0] && gu > 0.0) || (u >= rect.u[1] && gu < 0.0);
+            let fix_v = (v <= rect.v[0] && gv > 0.0) || (v >= rect.v[1] && gv < 0.0);
+            let (su, sv) = match (fix_u, fix_v) {
+                (true, true) => break,
+                (true, false) => (0.0, step_1d(gv, hvv, g)),
+                (false, true) => (step_1d(gu, huu, e), 0.0),
+                (false, false) => step_2d([gu, gv], [huu, huv, hvv], [e, fm, g]),
+            };
+            if su == 0.0 && sv == 0.0 {
+                break;
+            }
+            let mut alpha = 1.0;
+            let mut accepted = None;
+            for _ in 0..MAX_HALVINGS {
+                let nu = (u + alpha * su).clamp(rect.u[0], rect.u[1]);
+                let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
+                let p = self.point_at(nu, nv);
+                let nf = p.distance_squared(test);
+                if nf <= f {
+                    accepted = Some((nu, nv, nf));
+                    break;
+                }
+                alpha *= 0.5;
+            }
+            let Some((nu, nv, nf)) = accepted else {
+                break;
+            };
+            let small = (nu - u).abs() <= tol_u && (nv - v).abs() <= tol_v;
+            u = nu;
+            v = nv;
+            f = nf;
+            d = self.derivatives_unchecked(u, v, 2);
+            r = d.point - test;
+            if small {
+                break;
+            }
+        }
+        best.offer(u, v, d.point, d.point.distance_squared(test));
+    }
+
+    /// Samples the line where `direction`'s parameter equals `fixed`, over `range` of the
+    /// other parameter, and polishes the best local minima in one dimension.
+    fn search_line(
+        &self,
+        test: Point3,
+        direction: SurfaceDirection,
+        fixed: f64,
+        range: [f64; 2],
+        samples: usize,
+        best: &mut Best,
+    ) {
+        let uv = |t: f64| match direction {
+            SurfaceDirection::U => (fixed, t),
+            SurfaceDirection::V => (t, fixed),
+        };
+        let param = |k: usize| {
+            let s = k as f64 / (samples - 1) as f64;
+            (1.0 - s) * range[0] + s * range[1]
+        };
+        let mut values = [0.0; 34];
+        let samples = samples.min(values.len());
+        for (k, value) in values[..samples].iter_mut().enumerate() {
+            let (u, v) = uv(param(k));
+            *value = self.point_at(u, v).distance_squared(test);
+        }
+        let mut starts: Vec<(f64, usize)> = (0..samples)
+            .filter(|&k| {
+                (k == 0 || values[k - 1] > values[k])
+                    && (k + 1 == samples || values[k + 1] >= values[k])
+            })
+            .map(|k| (values[k], k))
+            .collect();
+        starts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for &(_, k) in starts.iter().take(2) {
+            self.polish_1d(test, direction, fixed, param(k), range, best);
+        }
+    }
+
+    /// Newton iteration in one parameter with the other fixed.
+    fn polish_1d(
+        &self,
+        test: Point3,
+        direction: SurfaceDirection,
+        fixed: f64,
+        mut t: f64,
+        range: [f64; 2],
+        best: &mut Best,
+    ) {
+        let uv = |t: f64| match direction {
+            SurfaceDirection::U => (fixed, t),
+            SurfaceDirection::V => (t, fixed),
+        };
+        let tol = 4.0 * f64::EPSILON * (range[0].abs().max(range[1].abs()) + 1.0);
+        let (u, v) = uv(t);
+        let mut d = self.derivatives_unchecked(u, v, 2);
+        for _ in 0..MAX_ITERATIONS {
+            let r = d.point - test;
+            let f = r.length_squared();
+            let (dt, dtt) = match direction {
+                SurfaceDirection::U => (d.dv, d.dvv),
+                SurfaceDirection::V => (d.du, d.duu),
+            };
+            let g = r.dot(dt);
+            if (t <= range[0] && g > 0.0) || (t >= range[1] && g < 0.0) {
+                break;
+            }
+            let s = step_1d(g, dt.dot(dt) + r.dot(dtt), dt.dot(dt));
+            if s == 0.0 {
+                break;
+            }
+            let mut alpha = 1.0;
+            let mut accepted = None;
+            for _ in 0..MAX_HALVINGS {
+                let nt = (t + alpha * s).clamp(range[0], range[1]);
+                let (u, v) = uv(nt);
+                if self.point_at(u, v).distance_squared(test) <= f {
+                    accepted = Some(nt);
+                    break;
+                }
+                alpha *= 0.5;
+            }
+            let Some(nt) = accepted else {
+                break;
+            };
+            let small = (nt - t).abs() <= tol;
+            t = nt;
+            let (u, v) = uv(t);
+            d = self.derivatives_unchecked(u, v, 2);
+            if small {
+                break;
+            }
+        }
+        let (u, v) = uv(t);
+        best.offer(u, v, d.point, d.point.distance_squared(test));
+    }
+}
+
+/// The number of samples per span and direction for a degree: enough to separate the local
+/// minima a polynomial of that degree can have.
+fn samples_per_span(degree: usize) -> usize {
+    (2 * degree + 2).clamp(4, 16)
+}
+
+/// The Newton step for `g + h·s = 0` in one variable, falling back to the Gauss–Newton
+/// curvature `gn` (always positive where the derivative does not vanish) when `h ≤ 0`.
+fn step_1d(g: f64, h: f64, gn: f64) -> f64 {
+    if h > 0.0 {
+        -g / h
+    } else if gn > 0.0 {
+        -g / gn
+    } else {
+        0.0
+    }
+}
+
+/// The Newton step in two variables for gradient `g` and Hessian `[huu, huv, hvv]`, falling
+/// back to Gauss–Newton on the first fundamental form `[E, F, G]` when the Hessian is not
+/// positive definite, and to separate one-variable steps when that is singular too.
+fn step_2d(g: [f64; 2], [huu, huv, hvv]: [f64; 3], [e, f, gg]: [f64; 3]) -> (f64, f64) {
+    let solve = |a: f64, b: f64, c: f64| {
+        let det = a * c - b * b;
+        (a > 0.0 && det > 1e-14 * a * c)
+            .then(|| (-(c * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det))
+    };
+    solve(huu, huv, hvv)
+        .or_else(|| solve(e, f, gg))
+        .unwrap_or_else(|| (step_1d(g[0], huu, e), step_1d(g[1], hvv, gg)))
+}
+
+/// The squared distance from `p` to the axis-aligned box of `points`.
+fn box_distance_squared(points: impl Iterator<Item = Point3>, p: Point3) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for q in points {
+        for (k, c) in q.to_array().into_iter().enumerate() {
+            lo[k] = lo[k].min(c);
+            hi[k] = hi[k].max(c);
+        }
+    }
+    p.to_array()
+        .into_iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let d = (lo[k] - c).max(c - hi[k]).max(0.0);
+            d * d
+        })
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nurbs_surface::tests::wavy;
+    use crate::{Cone, Interval, Plane, Sphere, Vector3};
+
+    /// The smallest distance over a dense grid, as an upper bound for the closest point.
+    fn brute_force(s: &NurbsSurface, p: Point3, n: usize) -> f64 {
+        let mut best = f64::INFINITY;
+        for i in 0..=n {
+            for j in 0..=n {
+                let u = s.domain_u().parameter_at(i as f64 / n as f64);
+                let v = s.domain_v().parameter_at(j as f64 / n as f64);
+                best = best.min(s.point_at(u, v).distance(p));
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn plane_interior_edge_and_corner() {
+        let s = NurbsSurface::from_plane(
+            &Plane::WORLD_XY,
+            Interval::new(0.0, 4.0),
+            Interval::new(0.0, 2.0),
+        )
+        .unwrap();
+        let cp = s.closest_point(Point3::new(1.0, 1.5, 3.0)).unwrap();
+        assert_eq!((cp.u, cp.v, cp.distance), (1.0, 1.5, 3.0));
+        let cp = s.closest_point(Point3::new(2.0, -1.0, 0.0)).unwrap();
+        assert!((cp.u - 2.0).abs() < 1e-15 && cp.v == 0.0 && (cp.distance - 1.0).abs() < 1e-15);
+        let cp = s.closest_point(Point3::new(7.0, 6.0, 0.0)).unwrap();
+        assert_eq!((cp.u, cp.v, cp.distance), (4.0, 2.0, 5.0));
+    }
+
+    #[test]
+    fn never_farther_than_a_dense_sample() {
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for p in [
+                Point3::new(3.0, 2.0, 4.0),
+                Point3::new(-2.0, -1.0, 0.0),
+                Point3::new(9.0, 5.0, -3.0),
+                Point3::new(3.3, 1.6, 0.1),
+                Point3::new(100.0, -50.0, 20.0),
+            ] {
+                let cp = s.closest_point(p).unwrap();
+                assert!(cp.point.distance(s.point_at(cp.u, cp.v)) < 1e-14);
+                assert!((cp.point.distance(p) - cp.distance).abs() < 1e-14);
+                let sampled = brute_force(&s, p, 200);
+                assert!(
+                    cp.distance <= sampled + 1e-12,
+                    "{p:?}: {} vs {sampled}",
+                    cp.distance
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn crease_is_found() {
+        // A degree-1 fold along v = 1: the nearest point to a point outside the fold is on it.
+        let s = NurbsSurface::non_rational(
+            1,
+            1,
+            vec![
+                vec![
+                    Point3::new(0.0, 0.0, 0.0),
+                    Point3::new(0.0, 1.0, 1.0),
+                    Point3::new(0.0, 2.0, 0.0),
+                ],
+                vec![
+                    Point3::new(1.0, 0.0, 0.0),
+                    Point3::new(1.0, 1.0, 1.0),
+                    Point3::new(1.0, 2.0, 0.0),
+                ],
+            ],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0, 2.0],
+        )
+        .unwrap();
+        let cp = s.closest_point(Point3::new(0.5, 1.0, 3.0)).unwrap();
+        assert!((cp.v - 1.0).abs() < 1e-12 && (cp.u - 0.5).abs() < 1e-12);
+        assert!((cp.distance - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn sphere_and_cone_special_points() {
+        let c = Point3::new(1.0, -2.0, 0.5);
+        let sphere = Sphere::new(c, 2.0).unwrap().to_nurbs().unwrap();
+        // From the centre every point is at the radius.
+        let cp = sphere.closest_point(c).unwrap();
+        assert!((cp.distance - 2.0).abs() < 1e-12);
+        // On the axis above the north pole the pole itself.
+        let cp = sphere
+            .closest_point(c + Vector3::new(0.0, 0.0, 5.0))
+            .unwrap();
+        assert!((cp.distance - 3.0).abs() < 1e-12);
+        assert!(cp.point.distance(c + Vector3::new(0.0, 0.0, 2.0)) < 1e-12);
+        // A cone's apex from behind it.
+        let cone = Cone::new(Plane::WORLD_XY, 2.0, 1.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let cp = cone.closest_point(Point3::new(0.1, 0.0, -3.0)).unwrap();
+        assert!(cp.point.distance(Point3::ORIGIN) < 1e-12 && cp.v == 0.0);
+    }
+
+    #[test]
+    fn restricted_search_and_bad_input() {
+        let s = wavy(false);
+        let p = Point3::new(3.0, 2.0, 4.0);
+        let whole = s.closest_point(p).unwrap();
+        let part = s.closest_point_in(p, [0.0, 0.5], [-1.0, 0.0]).unwrap();
+        assert!(part.distance >= whole.distance);
+        assert!(part.u <= 0.5 && part.v <= 0.0);
+        assert!(s.closest_point(Point3::new(f64::NAN, 0.0, 0.0)).is_err());
+        assert!(s.closest_point_in(p, [1.0, 0.0], [0.0, 1.0]).is_err());
+    }
+}

@@ -1,0 +1,101 @@
+//! Shared helpers for the kernel's integration tests: locating and loading the oracle files.
+
+#![allow(
+    dead_code,
+    reason = "each test binary uses its own subset of the helpers"
+)]
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+
+/// The `shared/oracle` directory, found by walking up from the crate's manifest directory.
+///
+/// In the development layout the repository sits next to `shared/`; in CI the repository is
+/// cloned with `shared/` beside it. Either way one of the ancestors has a `shared/oracle` child.
+pub fn oracle_dir() -> PathBuf {
+    let start = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for dir in start.ancestors() {
+        let candidate = dir.join("shared").join("oracle");
+        if candidate.join("README.md").is_file() {
+            return candidate;
+        }
+    }
+    panic!(
+        "no shared/oracle directory above {}; clone the shared reference data beside the repository",
+        start.display()
+    );
+}
+
+/// Loads one oracle file (`opennurbs-cases.json` or `occt-cases.json`) as JSON.
+pub fn load_oracle(file: &str) -> Value {
+    let path = oracle_dir().join(file);
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("cannot parse {}: {e}", path.display()))
+}
+
+/// A JSON number as `f64`.
+pub fn num(v: &Value) -> f64 {
+    v.as_f64()
+        .unwrap_or_else(|| panic!("expected a number, got {v}"))
+}
+
+/// A JSON array of three numbers.
+pub fn triple(v: &Value) -> [f64; 3] {
+    let a = v
+        .as_array()
+        .unwrap_or_else(|| panic!("expected an array, got {v}"));
+    assert_eq!(a.len(), 3, "expected three numbers, got {v}");
+    [num(&a[0]), num(&a[1]), num(&a[2])]
+}
+
+/// A JSON array of numbers.
+pub fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .unwrap_or_else(|| panic!("expected an array, got {v}"))
+        .iter()
+        .map(num)
+        .collect()
+}
+
+/// Whether `a` and `b` agree within `rel` relative to `max(1, |b|)`.
+pub fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs().max(1.0)
+}
+
+/// Whether two 3-vectors agree within `rel` relative to `max(1, |b|)` (Euclidean norm).
+pub fn close3(a: [f64; 3], b: [f64; 3], rel: f64) -> bool {
+    let d = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+    let n = (b[0].powi(2) + b[1].powi(2) + b[2].powi(2)).sqrt();
+    d <= rel * n.max(1.0)
+}
+
+/// Collects failures so that a test can report all of them, each naming its case.
+#[derive(Debug, Default)]
+pub struct Failures(Vec<String>);
+
+impl Failures {
+    /// Records a failure.
+    pub fn push(&mut self, message: String) {
+        self.0.push(message);
+    }
+
+    /// Records a failure when `ok` is false.
+    pub fn check(&mut self, ok: bool, message: impl FnOnce() -> String) {
+        if !ok {
+            self.0.push(message());
+        }
+    }
+
+    /// Panics with every recorded failure, or does nothing when there are none.
+    pub fn finish(self, what: &str) {
+        if !self.0.is_empty() {
+            panic!(
+                "{} {what} failure(s):\n  {}",
+                self.0.len(),
+                self.0.join("\n  ")
+            );
+        }
+    }
+}
