@@ -42,16 +42,17 @@ pub(crate) fn set_number(s: &mut Solve<'_>, output: usize, x: f64, why: impl FnO
     }
 }
 
-/// Writes an operand to an item output; non-finite numbers in it are written as NaN with a
-/// warning built by `why`.
-pub(crate) fn set_operand(
-    s: &mut Solve<'_>,
-    output: usize,
-    r: Operand,
-    why: impl FnOnce() -> String,
-) {
-    if !r.is_finite() {
-        s.warning(invalid_number_warning(&why()));
+/// Writes an operand to an item output, non-finite numbers in it as NaN. `why` says which
+/// invalid number (an input, or an intermediate result) was met on the way, if any: it is
+/// reported as a warning even when the result itself is finite (as `vector / ∞` is).
+pub(crate) fn set_operand(s: &mut Solve<'_>, output: usize, r: Operand, why: Option<String>) {
+    let why = why.or_else(|| (!r.is_finite()).then(|| format!("the result is {r}")));
+    if let Some(why) = why {
+        s.warning(if r.is_finite() {
+            format!("invalid number on the way to the result: {why}")
+        } else {
+            invalid_number_warning(&why)
+        });
     }
     s.set_value(output, Some(r.with_invalid_as_nan().into_value()));
 }

@@ -142,7 +142,8 @@ pub fn negative() -> NodeType {
         .solve(|s| {
             let x = operand(s, 0)?;
             let r = UnaryOp::Negate.apply(&x)?;
-            set_operand(s, 0, r, || format!("input x is {x}"));
+            let why = (!x.is_finite()).then(|| format!("input x is {x}"));
+            set_operand(s, 0, r, why);
             Ok(())
         })
 }
@@ -212,7 +213,7 @@ fn fold(s: &mut Solve<'_>, op: BinaryOp) -> Result<(), NodeError> {
         }
         acc = r;
     }
-    set_operand(s, 0, acc, || why.unwrap_or_default());
+    set_operand(s, 0, acc, why);
     Ok(())
 }
 
@@ -226,14 +227,13 @@ fn numbers(s: &mut Solve<'_>, op: BinaryOp) -> Result<(), NodeError> {
     let a = *s.item::<f64>(0)?;
     let b = *s.item::<f64>(1)?;
     let (x, y) = (Operand::Number(a), Operand::Number(b));
-    let r = op.apply(&x, &y)?.as_number().unwrap_or(f64::NAN);
-    set_number(s, 0, r, || {
-        if a.is_finite() && b.is_finite() {
-            binary_warning(op, &x, &y)
-        } else {
-            format!("the inputs are {a} and {b}")
-        }
-    });
+    let r = op.apply(&x, &y)?;
+    let why = if a.is_finite() && b.is_finite() {
+        (!r.is_finite()).then(|| binary_warning(op, &x, &y))
+    } else {
+        Some(format!("the inputs are {a} and {b}"))
+    };
+    set_operand(s, 0, r, why);
     Ok(())
 }
 

@@ -18,7 +18,7 @@ use locus_runtime::{
     DataType, NodeConfig, NodeError, NodeRegistry, NodeType, Port, Prepared, Solve, Value,
 };
 
-use super::invalid_number_warning;
+use super::set_operand;
 use crate::expression::{EvalError, Operand, ParseError, Program};
 
 /// Id of [`expression`].
@@ -215,14 +215,7 @@ fn run(s: &mut Solve<'_>, program: &Program, first: usize) -> Result<(), NodeErr
     let result = program.evaluate(|i| load(s, first + i));
     match result {
         Ok(evaluation) => {
-            if let Some(why) = evaluation.warning {
-                s.warning(if evaluation.value.is_finite() {
-                    format!("invalid number on the way to the result: {why}")
-                } else {
-                    invalid_number_warning(&why)
-                });
-            }
-            s.set_value(0, Some(evaluation.value.into_value()));
+            set_operand(s, 0, evaluation.value, evaluation.warning);
             Ok(())
         }
         // A null variable leaves a null result, without a message.
