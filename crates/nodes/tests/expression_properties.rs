@@ -178,3 +178,20 @@ fn the_comparison_catches_a_difference() {
     });
     assert!(result.is_err());
 }
+
+#[test]
+fn the_language_doc_lists_every_function() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/expression.md");
+    let doc = std::fs::read_to_string(&path).expect("docs/expression.md is readable");
+    for (name, _) in locus_nodes::expression::FUNCTIONS {
+        assert!(
+            doc.contains(&format!("`{name}(")),
+            "docs/expression.md does not describe {name}"
+        );
+    }
+    assert!(doc.contains("`if(c, a, b)`"));
+    assert!(doc.contains(&format!(
+        "at most {} levels",
+        locus_nodes::expression::MAX_NESTING
+    )));
+}

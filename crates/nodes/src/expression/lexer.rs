@@ -281,6 +281,21 @@ mod tests {
     }
 
     #[test]
+    fn number_forms() {
+        assert_eq!(
+            kinds("2. 6.02E23 1e+2 == <>"),
+            vec![
+                TokenKind::Number(2.0),
+                TokenKind::Number(6.02e23),
+                TokenKind::Number(100.0),
+                TokenKind::Equal,
+                TokenKind::NotEqual,
+                TokenKind::End,
+            ]
+        );
+    }
+
+    #[test]
     fn unicode_operators() {
         assert_eq!(
             kinds("a−b×c÷d≠e"),
