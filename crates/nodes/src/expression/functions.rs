@@ -130,7 +130,7 @@ impl Function {
         }
         let number = |k: usize| -> Result<f64, EvalError> {
             let a = args.get(k).ok_or(EvalError::Internal("missing argument"))?;
-            a.as_number().ok_or(EvalError::Argument {
+            a.as_number().ok_or_else(|| EvalError::Argument {
                 function: self.name(),
                 got: a.kind(),
             })

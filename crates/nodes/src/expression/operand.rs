@@ -109,6 +109,11 @@ impl BinaryOp {
     /// [`EvalError::Binary`] when the operator does not apply to these kinds of operand,
     /// [`EvalError::NotBoolean`] for a logical operator on a non-boolean.
     pub fn apply(self, a: &Operand, b: &Operand) -> Result<Operand, EvalError> {
+        if let (Operand::Number(x), Operand::Number(y)) = (a, b)
+            && let Some(r) = self.apply_numbers(*x, *y)
+        {
+            return Ok(r);
+        }
         match self {
             BinaryOp::Add => add(a, b),
             BinaryOp::Subtract => subtract(a, b),
@@ -127,6 +132,26 @@ impl BinaryOp {
             BinaryOp::Or => Ok(Operand::Boolean(a.truth()? || b.truth()?)),
             BinaryOp::Xor => Ok(Operand::Boolean(a.truth()? != b.truth()?)),
         }
+    }
+
+    /// The fast path for two numbers (`None` for the logical operators, which check NaN).
+    #[inline]
+    fn apply_numbers(self, x: f64, y: f64) -> Option<Operand> {
+        Some(match self {
+            BinaryOp::Add => Operand::Number(x + y),
+            BinaryOp::Subtract => Operand::Number(x - y),
+            BinaryOp::Multiply => Operand::Number(x * y),
+            BinaryOp::Divide => Operand::Number(x / y),
+            BinaryOp::Modulus => Operand::Number(x % y),
+            BinaryOp::Power => Operand::Number(x.powf(y)),
+            BinaryOp::Less => Operand::Boolean(x < y),
+            BinaryOp::LessEqual => Operand::Boolean(x <= y),
+            BinaryOp::Greater => Operand::Boolean(x > y),
+            BinaryOp::GreaterEqual => Operand::Boolean(x >= y),
+            BinaryOp::Equal => Operand::Boolean(x == y),
+            BinaryOp::NotEqual => Operand::Boolean(x != y),
+            BinaryOp::Concatenate | BinaryOp::And | BinaryOp::Or | BinaryOp::Xor => return None,
+        })
     }
 
     fn error(self, a: &Operand, b: &Operand) -> EvalError {

@@ -5,6 +5,7 @@
 //! points and vectors, combined by the rules of [`crate::expression::Operand`] (so an Addition
 //! node and the formula `A + B` always agree). Absolute, Power and Modulus take numbers.
 
+use locus_kernel::{Point3, Vector3};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Solve};
 
 use super::{set_number, set_operand};
@@ -190,6 +191,16 @@ pub fn modulus() -> NodeType {
 
 /// Input `i` as an operand, text read as a number.
 fn operand(s: &Solve<'_>, i: usize) -> Result<Operand, NodeError> {
+    // Typed columns first: reading them copies no `Value`.
+    if let Some(x) = s.item_opt::<f64>(i) {
+        return Ok(Operand::Number(*x));
+    }
+    if let Some(p) = s.item_opt::<Point3>(i) {
+        return Ok(Operand::Point(*p));
+    }
+    if let Some(v) = s.item_opt::<Vector3>(i) {
+        return Ok(Operand::Vector(*v));
+    }
     // Required inputs with a null item are skipped by the runtime, so a value is present.
     let name = s.input_port(i).map_or("?", |p| p.nickname.as_str());
     let value = s
@@ -239,7 +250,6 @@ fn numbers(s: &mut Solve<'_>, op: BinaryOp) -> Result<(), NodeError> {
 
 #[cfg(test)]
 mod tests {
-    use locus_kernel::{Point3, Vector3};
     use locus_runtime::{DataTree, Level, NodeCall, Value};
 
     use super::*;

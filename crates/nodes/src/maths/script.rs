@@ -14,6 +14,7 @@
 
 use std::sync::{Arc, RwLock};
 
+use locus_kernel::{Point3, Vector3};
 use locus_runtime::{
     DataType, NodeConfig, NodeError, NodeRegistry, NodeType, Port, Prepared, Solve, Value,
 };
@@ -226,8 +227,15 @@ fn run(s: &mut Solve<'_>, program: &Program, first: usize) -> Result<(), NodeErr
 
 /// The current item of input `input` as an operand.
 fn load(s: &Solve<'_>, input: usize) -> Result<Operand, EvalError> {
+    // Typed columns first: reading them copies no `Value`.
     if let Some(x) = s.item_opt::<f64>(input) {
         return Ok(Operand::Number(*x));
+    }
+    if let Some(p) = s.item_opt::<Point3>(input) {
+        return Ok(Operand::Point(*p));
+    }
+    if let Some(v) = s.item_opt::<Vector3>(input) {
+        return Ok(Operand::Vector(*v));
     }
     match s.value(input) {
         Some(v) => Operand::from_value(&v),
@@ -245,7 +253,6 @@ fn load(s: &Solve<'_>, input: usize) -> Result<Operand, EvalError> {
 
 #[cfg(test)]
 mod tests {
-    use locus_kernel::{Point3, Vector3};
     use locus_runtime::{Branch, DataTree, Level, NodeCall, TreePath};
 
     use super::*;
