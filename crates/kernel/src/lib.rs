@@ -22,6 +22,9 @@
 mod arc;
 pub mod basis;
 mod bezier;
+mod brep;
+mod brep_builders;
+mod brep_mass;
 mod circle;
 mod error;
 mod hermite;
@@ -51,6 +54,10 @@ mod vector;
 
 pub use crate::arc::Arc;
 pub use crate::bezier::Bezier;
+pub use crate::brep::{
+    Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, EdgeKind, LoopKind, TrimKind,
+};
+pub use crate::brep_mass::{AreaProperties, VolumeProperties};
 pub use crate::circle::Circle;
 pub use crate::error::{Error, Result};
 pub use crate::hermite::CubicHermite;
