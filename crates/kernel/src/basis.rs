@@ -158,8 +158,8 @@ pub fn basis_function_derivatives(
     }
     let mut factor = p as f64;
     for (k, row) in ders.iter_mut().enumerate().take(top + 1).skip(1) {
-        for x in &mut row[..=p] {
-            *x *= factor;
+        for d in &mut row[..=p] {
+            *d *= factor;
         }
         factor *= (p - k) as f64;
     }

@@ -78,4 +78,11 @@ pub enum Error {
         /// The computation.
         what: &'static str,
     },
+    /// A transform collapsed a frame or a box so that the result has no well-defined axes, as
+    /// when a plane is projected onto a plane perpendicular to it.
+    #[error("{what} is degenerate after the transform")]
+    DegenerateTransformResult {
+        /// What was transformed, such as `"plane"`.
+        what: &'static str,
+    },
 }

@@ -71,10 +71,11 @@ impl Interval {
         (1.0 - s) * self.t0 + s * self.t1
     }
 
-    /// The normalized parameter of `t`: 0 at `t0`, 1 at `t1`.
+    /// The normalized parameter of `t`: 0 at `t0`, 1 at `t1` (both exactly).
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] when the interval has zero length.
+    /// [`Error::InvalidInput`] when the interval has zero length or is not finite,
+    /// [`Error::NotFinite`] when `t` is NaN or infinite.
     pub fn normalized_parameter_at(self, t: f64) -> Result<f64> {
         let len = self.length();
         if len == 0.0 || !len.is_finite() {
@@ -83,7 +84,59 @@ impl Interval {
                 self.t0, self.t1
             )));
         }
+        if !t.is_finite() {
+            return Err(Error::NotFinite { what: "parameter" });
+        }
+        // As openNURBS: the end maps to exactly 1 even where (t1 − t0) / (t1 − t0) would not.
+        if t == self.t1 {
+            return Ok(1.0);
+        }
         Ok((t - self.t0) / len)
+    }
+
+    /// Maps `t` from this interval to `target`, keeping its normalized parameter (Grasshopper's
+    /// *Remap Numbers*).
+    ///
+    /// # Errors
+    /// As [`normalized_parameter_at`](Self::normalized_parameter_at).
+    pub fn remap(self, t: f64, target: Self) -> Result<f64> {
+        Ok(target.parameter_at(self.normalized_parameter_at(t)?))
+    }
+
+    /// The same interval made increasing: `min()` to `max()`.
+    #[inline]
+    pub fn increasing(self) -> Self {
+        Self::new(self.min(), self.max())
+    }
+
+    /// Whether both ends are equal (the interval is a single number).
+    #[inline]
+    pub fn is_singleton(self) -> bool {
+        self.t0 == self.t1
+    }
+
+    /// `t` clamped to the interval, whatever its direction (NaN stays NaN).
+    #[inline]
+    pub fn clamp(self, t: f64) -> f64 {
+        if t.is_nan() {
+            return t;
+        }
+        t.max(self.min()).min(self.max())
+    }
+
+    /// The smallest increasing interval containing both intervals.
+    #[inline]
+    pub fn union(self, other: Self) -> Self {
+        Self::new(self.min().min(other.min()), self.max().max(other.max()))
+    }
+
+    /// The increasing interval common to both, or `None` when they do not overlap (touching
+    /// ends give a singleton).
+    #[inline]
+    pub fn intersection(self, other: Self) -> Option<Self> {
+        let lo = self.min().max(other.min());
+        let hi = self.max().min(other.max());
+        (lo <= hi).then_some(Self::new(lo, hi))
     }
 
     /// Whether `t` lies in the interval (ends included), whatever its direction.
@@ -109,6 +162,40 @@ mod tests {
         assert_eq!(d.parameter_at(0.0), 10.0);
         assert_eq!(d.parameter_at(1.0), 2.0);
         assert_eq!(d.normalized_parameter_at(4.0).unwrap(), 0.75);
+    }
+
+    #[test]
+    fn normalized_end_is_exactly_one() {
+        let d = Interval::new(0.1, 0.7);
+        assert_eq!(d.normalized_parameter_at(0.7).unwrap(), 1.0);
+        assert_eq!(d.normalized_parameter_at(0.1).unwrap(), 0.0);
+        assert!(d.normalized_parameter_at(f64::NAN).is_err());
+    }
+
+    #[test]
+    fn remap_between_domains() {
+        let from = Interval::new(0.0, 10.0);
+        let to = Interval::new(1.0, -1.0);
+        assert_eq!(from.remap(2.5, to).unwrap(), 0.5);
+        assert_eq!(from.remap(10.0, to).unwrap(), -1.0);
+    }
+
+    #[test]
+    fn union_intersection_clamp() {
+        let a = Interval::new(3.0, 1.0);
+        let b = Interval::new(2.0, 5.0);
+        assert_eq!(a.increasing(), Interval::new(1.0, 3.0));
+        assert_eq!(a.union(b), Interval::new(1.0, 5.0));
+        assert_eq!(a.intersection(b), Some(Interval::new(2.0, 3.0)));
+        assert_eq!(a.intersection(Interval::new(4.0, 6.0)), None);
+        assert_eq!(
+            a.intersection(Interval::new(3.0, 6.0)),
+            Some(Interval::new(3.0, 3.0))
+        );
+        assert_eq!(a.clamp(7.0), 3.0);
+        assert_eq!(a.clamp(-7.0), 1.0);
+        assert!(a.clamp(f64::NAN).is_nan());
+        assert!(Interval::new(2.0, 2.0).is_singleton());
     }
 
     #[test]

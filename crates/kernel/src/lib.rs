@@ -20,12 +20,18 @@
 //! ```
 
 mod arc;
+mod arc_length;
 pub mod basis;
 mod bezier;
+mod bounding_box;
 mod brep;
 mod brep_builders;
 mod brep_mass;
 mod circle;
+mod continuity;
+mod curve;
+mod curve_closest_point;
+mod curve_measure;
 mod error;
 mod hermite;
 mod interpolate;
@@ -37,6 +43,7 @@ mod nurbs_curve_create;
 mod nurbs_curve_edit;
 mod nurbs_surface;
 mod nurbs_surface_edit;
+mod oriented_box;
 mod plane;
 mod point;
 mod polyline;
@@ -54,11 +61,17 @@ mod vector;
 
 pub use crate::arc::Arc;
 pub use crate::bezier::Bezier;
+pub use crate::bounding_box::BoundingBox;
 pub use crate::brep::{
     Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, EdgeKind, LoopKind, TrimKind,
 };
 pub use crate::brep_mass::{AreaProperties, VolumeProperties};
 pub use crate::circle::Circle;
+pub use crate::continuity::{
+    Continuity, ContinuityTolerances, continuity, continuity_with_tolerances,
+};
+pub use crate::curve::Curve;
+pub use crate::curve_closest_point::CurveClosestPoint;
 pub use crate::error::{Error, Result};
 pub use crate::hermite::CubicHermite;
 pub use crate::interpolate::{EndTangents, KnotStyle};
@@ -66,6 +79,7 @@ pub use crate::interval::Interval;
 pub use crate::line::Line;
 pub use crate::nurbs_curve::NurbsCurve;
 pub use crate::nurbs_surface::NurbsSurface;
+pub use crate::oriented_box::OrientedBox;
 pub use crate::plane::{Plane, perpendicular_to};
 pub use crate::point::Point3;
 pub use crate::polyline::Polyline;
@@ -75,4 +89,4 @@ pub use crate::surface_derivatives::SurfaceDerivatives;
 pub use crate::surface_direction::{SurfaceDirection, SurfaceSide};
 pub use crate::surface_forms::{Cone, Cylinder, Sphere};
 pub use crate::transform::Transform;
-pub use crate::vector::Vector3;
+pub use crate::vector::{Parallelism, Vector3};

@@ -1,4 +1,31 @@
 //! Points: locations in space.
+//!
+//! # Why points and vectors are distinct types
+//!
+//! The book insists: "Do not confuse vectors and points. [...] the North direction is a vector,
+//! while the North Pole is a location." The kernel makes the distinction in the type system
+//! with two structs, [`Point3`] and [`Vector3`], instead of using glam's `DVec3` for both.
+//!
+//! - **They transform differently.** A translation moves a point and leaves a vector alone;
+//!   a projective transform divides a point by its homogeneous weight. With one type for both,
+//!   every caller of a transform must remember which it holds;
+//!   [`Transform::transform_point`](crate::Transform::transform_point) and
+//!   [`Transform::transform_vector`](crate::Transform::transform_vector) take different types,
+//!   so the compiler remembers.
+//! - **The affine algebra is enforced.** `Point3 - Point3` is the `Vector3` between them,
+//!   `Point3 ± Vector3` is a `Point3`, vectors add and scale freely. `Point3 + Point3` and
+//!   `f64 * Point3` do not compile, because their result depends on where the origin is; the
+//!   coordinate-free combinations are [`Point3::lerp`] (the book's `M = Q + t (P − Q)`) and
+//!   [`Point3::midpoint`].
+//! - **Grasshopper's ports are typed the same way.** Rhino and Grasshopper separate `Point3d`
+//!   from `Vector3d`, so values crossing the runtime keep the meaning the user gave them.
+//!
+//! **Architecture Invariant:** kernel APIs take and return `Point3` for locations and `Vector3`
+//! for directions and displacements, never a bare `DVec3`. Both are plain `Copy` structs of
+//! three `f64` with the same layout, and convert to and from glam's `DVec3` for free
+//! (`to_dvec3`, `from_dvec3`, `From`), so numeric kernels may drop to glam internally. The
+//! explicit conversions [`Point3::to_vector`] and [`Point3::from_vector`] exist for the few
+//! places where a position vector is meant.
 
 use std::ops::{Add, AddAssign, Sub, SubAssign};
 
@@ -47,6 +74,12 @@ impl Point3 {
     #[inline]
     pub const fn to_array(self) -> [f64; 3] {
         [self.x, self.y, self.z]
+    }
+
+    /// The point with the coordinates of an array `[x, y, z]`.
+    #[inline]
+    pub const fn from_array(a: [f64; 3]) -> Self {
+        Self::new(a[0], a[1], a[2])
     }
 
     /// The position vector: the vector from the origin to this point.
@@ -102,6 +135,14 @@ impl Point3 {
     #[inline]
     pub fn is_nan(self) -> bool {
         self.x.is_nan() || self.y.is_nan() || self.z.is_nan()
+    }
+
+    /// Whether every coordinate differs from `other`'s by at most `max_abs_diff`.
+    #[inline]
+    pub fn abs_diff_eq(self, other: Self, max_abs_diff: f64) -> bool {
+        (self.x - other.x).abs() <= max_abs_diff
+            && (self.y - other.y).abs() <= max_abs_diff
+            && (self.z - other.z).abs() <= max_abs_diff
     }
 }
 
@@ -165,6 +206,16 @@ mod tests {
     fn book_point_moved_by_vector() {
         let p = Point3::new(2.0, 3.0, 1.0) + Vector3::new(2.0, 2.0, 2.0);
         assert_eq!(p, Point3::new(4.0, 5.0, 3.0));
+    }
+
+    #[test]
+    fn book_tip_point_and_distance() {
+        let a = Point3::new(1.0, 2.0, 3.0);
+        let b = a + Vector3::new(5.0, 6.0, 7.0);
+        assert_eq!(b, Point3::new(6.0, 8.0, 10.0));
+        assert_eq!(b - a, Vector3::new(5.0, 6.0, 7.0));
+        assert_eq!(a.distance(Point3::new(4.0, 6.0, 3.0)), 5.0);
+        assert_eq!(a.distance_squared(Point3::new(4.0, 6.0, 3.0)), 25.0);
     }
 
     #[test]

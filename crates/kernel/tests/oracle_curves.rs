@@ -12,7 +12,7 @@ mod support;
 
 use locus_kernel::{NurbsCurve, Point3, Vector3};
 use serde_json::Value;
-use support::{Failures, close3, load_oracle, num, numbers, triple};
+use support::{Failures, close, close3, load_oracle, num, numbers, triple};
 
 /// Agreement required with the oracle values: 1e-9 relative (to `max(1, |expected|)`).
 const REL: f64 = 1e-9;
@@ -173,4 +173,131 @@ fn opennurbs_constructions() {
         check_samples(name, &curve, case, &mut failures);
     }
     failures.finish("opennurbs construction");
+}
+
+/// The OCCT file's curves by name.
+fn occt_curves(oracle: &Value) -> std::collections::HashMap<String, NurbsCurve> {
+    oracle["curves"]
+        .as_array()
+        .expect("curves")
+        .iter()
+        .map(|c| (c["name"].as_str().expect("name").to_owned(), curve_from(c)))
+        .collect()
+}
+
+#[test]
+fn occt_curve_closest_points() {
+    let oracle = load_oracle("occt-cases.json");
+    let curves = occt_curves(&oracle);
+    let cases = oracle["curve_closest_point"]
+        .as_array()
+        .expect("curve_closest_point");
+    assert!(cases.len() >= 20);
+    let mut failures = Failures::default();
+    let mut count = 0;
+    for case in cases {
+        let name = case["curve"].as_str().expect("curve");
+        let curve = &curves[name];
+        let span = curve.domain().length();
+        for (i, q) in case["queries"]
+            .as_array()
+            .expect("queries")
+            .iter()
+            .enumerate()
+        {
+            count += 1;
+            let kind = q["kind"].as_str().unwrap_or("?");
+            let label = format!("{name} query {i} ({kind}, at {})", q["at"]);
+            let test_point = point(&q["test_point"]);
+            let got = match curve.closest_point(test_point) {
+                Ok(r) => r,
+                Err(e) => {
+                    failures.push(format!("{label}: error {e}"));
+                    continue;
+                }
+            };
+            let want_d = num(&q["distance"]);
+            failures.check(close(got.distance, want_d, REL), || {
+                format!("{label}: distance {}, expected {want_d}", got.distance)
+            });
+            // The parameter and point are unique unless the case lists ties or a seam.
+            let mut allowed: Vec<(f64, [f64; 3])> = vec![(num(&q["t"]), triple(&q["point"]))];
+            if let Some(ties) = q.get("ties").and_then(Value::as_array) {
+                allowed.extend(ties.iter().map(|t| (num(&t["t"]), triple(&t["point"]))));
+            }
+            if q.get("seam").is_some() {
+                let d = curve.domain();
+                allowed.push((d.t0, arr(curve.point_at(d.t0))));
+                allowed.push((d.t1, arr(curve.point_at(d.t1))));
+            }
+            let param_ok = allowed
+                .iter()
+                .any(|(t, _)| (got.t - t).abs() <= 1e-6 * span);
+            failures.check(param_ok, || {
+                format!("{label}: t {}, expected one of {:?}", got.t, allowed)
+            });
+            let point_ok = allowed
+                .iter()
+                .any(|(_, p)| close3(arr(got.point), *p, 1e-6));
+            failures.check(point_ok, || {
+                format!(
+                    "{label}: point {:?}, expected {:?}",
+                    got.point, allowed[0].1
+                )
+            });
+        }
+    }
+    assert!(count >= 100, "only {count} queries");
+    failures.finish("occt closest point");
+}
+
+#[test]
+fn occt_arc_lengths() {
+    let oracle = load_oracle("occt-cases.json");
+    let curves = occt_curves(&oracle);
+    let cases = oracle["arc_length"].as_array().expect("arc_length");
+    assert!(cases.len() >= 20);
+    let mut failures = Failures::default();
+    for case in cases {
+        let name = case["curve"].as_str().expect("curve");
+        let curve = &curves[name];
+        let span = curve.domain().length();
+        let want = num(&case["length"]);
+        let got = curve.length();
+        failures.check(close(got, want, REL), || {
+            format!("{name}: length {got}, expected {want}")
+        });
+        for sub in case["sub_intervals"].as_array().expect("sub_intervals") {
+            let (t0, t1) = (num(&sub["t0"]), num(&sub["t1"]));
+            let want = num(&sub["length"]);
+            match curve.length_between(t0, t1) {
+                Ok(got) => failures.check(close(got, want, REL), || {
+                    format!("{name}: length over [{t0}, {t1}] {got}, expected {want}")
+                }),
+                Err(e) => failures.push(format!("{name}: length over [{t0}, {t1}]: {e}")),
+            }
+        }
+        for lp in case["length_parameters"]
+            .as_array()
+            .expect("length_parameters")
+        {
+            let fraction = num(&lp["fraction"]);
+            let want_t = num(&lp["t"]);
+            match curve.parameter_at_normalized_length(fraction) {
+                Ok(t) => {
+                    failures.check((t - want_t).abs() <= 1e-8 * span, || {
+                        format!(
+                            "{name}: parameter at {fraction} of the length {t}, expected {want_t}"
+                        )
+                    });
+                    let want_p = triple(&lp["point"]);
+                    failures.check(close3(arr(curve.point_at(t)), want_p, 1e-8), || {
+                        format!("{name}: point at {fraction} of the length, expected {want_p:?}")
+                    });
+                }
+                Err(e) => failures.push(format!("{name}: parameter at {fraction}: {e}")),
+            }
+        }
+    }
+    failures.finish("occt arc length");
 }

@@ -1,0 +1,420 @@
+//! Arc length of NURBS curves, parameters at given lengths, and division by count and length.
+//!
+//! The length `∫ |C'(t)| dt` is integrated span by span (between distinct knots the curve is one
+//! smooth piece, so kinks never sit inside an integration interval) with adaptive
+//! Gauss–Legendre quadrature: each interval is integrated with 10 nodes and as two halves, and
+//! halved again until both estimates agree to the interval's share of the tolerance.
+//!
+//! The parameter at a length is found by Newton's method on `L(t) − s` (whose derivative is the
+//! speed `|C'(t)|`), safeguarded by bisection inside the span that contains the length.
+
+use std::sync::OnceLock;
+
+use crate::tolerance::LENGTH_TOLERANCE;
+use crate::{Error, NurbsCurve, Result, Vector3};
+
+/// The number of Gauss–Legendre nodes per panel.
+const NODES: usize = 10;
+
+/// The deepest bisection of one span in the adaptive quadrature.
+const MAX_DEPTH: u32 = 40;
+
+/// The 10-point Gauss–Legendre nodes on `[−1, 1]` and their weights, computed once by Newton's
+/// method on the Legendre polynomial `P₁₀`.
+fn gauss_legendre() -> &'static ([f64; NODES], [f64; NODES]) {
+    static TABLE: OnceLock<([f64; NODES], [f64; NODES])> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let n = NODES;
+        let mut x = [0.0; NODES];
+        let mut w = [0.0; NODES];
+        for i in 0..n {
+            let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+            let mut dp = 1.0;
+            for _ in 0..100 {
+                // Legendre recurrence for P_n(z) and its derivative.
+                let (mut p0, mut p1) = (1.0, z);
+                for k in 2..=n {
+                    let k = k as f64;
+                    let p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
+                let dz = p1 / dp;
+                z -= dz;
+                if dz.abs() < 1e-16 {
+                    break;
+                }
+            }
+            x[i] = z;
+            w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+        }
+        (x, w)
+    })
+}
+
+impl NurbsCurve {
+    /// The speed `|C'(t)|`.
+    #[inline]
+    pub(crate) fn speed_at(&self, t: f64) -> f64 {
+        let mut d = [Vector3::ZERO; 2];
+        self.derivatives_into(t, &mut d);
+        d[1].length()
+    }
+
+    /// Gauss–Legendre estimate of the length over `[a, b]` (one panel).
+    fn panel(&self, a: f64, b: f64) -> f64 {
+        let (x, w) = gauss_legendre();
+        let half = 0.5 * (b - a);
+        let mid = 0.5 * (a + b);
+        let mut sum = 0.0;
+        for (xi, wi) in x.iter().zip(w) {
+            sum += wi * self.speed_at(mid + half * xi);
+        }
+        sum * half
+    }
+
+    /// The adaptive length over `[a, b]`, inside one span, to the absolute tolerance `tol`.
+    fn adaptive(&self, a: f64, b: f64, whole: f64, tol: f64, depth: u32) -> f64 {
+        let m = 0.5 * (a + b);
+        let left = self.panel(a, m);
+        let right = self.panel(m, b);
+        let both = left + right;
+        if depth >= MAX_DEPTH || (both - whole).abs() <= tol || !both.is_finite() {
+            return both;
+        }
+        self.adaptive(a, m, left, 0.5 * tol, depth + 1)
+            + self.adaptive(m, b, right, 0.5 * tol, depth + 1)
+    }
+
+    /// The length over `[a, b]` with `a ≤ b` inside one span, to the absolute tolerance `tol`.
+    fn span_length(&self, a: f64, b: f64, tol: f64) -> f64 {
+        if b <= a {
+            return 0.0;
+        }
+        let whole = self.panel(a, b);
+        self.adaptive(a, b, whole, tol, 0)
+    }
+
+    /// A quick estimate of the length (one panel per span), used to turn relative tolerances
+    /// into absolute ones.
+    fn rough_length(&self) -> f64 {
+        let breaks = self.span_breaks();
+        breaks.windows(2).map(|w| self.panel(w[0], w[1])).sum()
+    }
+
+    /// The length of the curve to the default relative tolerance [`LENGTH_TOLERANCE`].
+    pub fn length(&self) -> f64 {
+        self.length_with_tolerance(LENGTH_TOLERANCE)
+    }
+
+    /// The length of the curve, with a quadrature error estimated below `tolerance` times the
+    /// length.
+    pub fn length_with_tolerance(&self, tolerance: f64) -> f64 {
+        let table = LengthTable::new(self, tolerance);
+        table.total()
+    }
+
+    /// The length of the part of the curve between the parameters `t0` and `t1` (in either
+    /// order), to the default tolerance.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for NaN parameters; [`Error::InvalidInput`] for parameters outside
+    /// the domain.
+    pub fn length_between(&self, t0: f64, t1: f64) -> Result<f64> {
+        for t in [t0, t1] {
+            self.check_parameter(t)?;
+        }
+        let (a, b) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+        let tol = LENGTH_TOLERANCE * self.rough_length().max(f64::MIN_POSITIVE);
+        let breaks = self.span_breaks();
+        let mut total = 0.0;
+        for w in breaks.windows(2) {
+            let lo = w[0].max(a);
+            let hi = w[1].min(b);
+            if hi > lo {
+                total += self.span_length(lo, hi, tol * (hi - lo) / (b - a).max(f64::MIN_POSITIVE));
+            }
+        }
+        Ok(total)
+    }
+
+    /// The parameter `t` with `length(domain start, t) = length`, to the default tolerance.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for a NaN length; [`Error::InvalidInput`] for a negative length or
+    /// one beyond the curve's length.
+    pub fn parameter_at_length(&self, length: f64) -> Result<f64> {
+        LengthTable::new(self, LENGTH_TOLERANCE).parameter_at(self, length)
+    }
+
+    /// The parameter at the fraction `fraction ∈ [0, 1]` of the curve's length.
+    ///
+    /// # Errors
+    /// As [`NurbsCurve::parameter_at_length`], for fractions outside `[0, 1]`.
+    pub fn parameter_at_normalized_length(&self, fraction: f64) -> Result<f64> {
+        let table = LengthTable::new(self, LENGTH_TOLERANCE);
+        table.parameter_at(self, fraction * table.total())
+    }
+
+    /// The parameters dividing the curve into `count` pieces of equal length (Grasshopper's
+    /// Divide Curve): `count + 1` parameters from start to end on an open curve, `count` on a
+    /// closed one (the seam is not repeated).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when `count` is 0.
+    pub fn divide_by_count(&self, count: usize) -> Result<Vec<f64>> {
+        if count == 0 {
+            return Err(Error::InvalidInput(
+                "division count must be at least 1".into(),
+            ));
+        }
+        let table = LengthTable::new(self, LENGTH_TOLERANCE);
+        let total = table.total();
+        let d = self.domain();
+        let last = if self.is_closed() { count - 1 } else { count };
+        let mut out = Vec::with_capacity(last + 1);
+        for k in 0..=last {
+            let t = if k == 0 {
+                d.t0
+            } else if k == count {
+                d.t1
+            } else {
+                table.parameter_at(self, total * k as f64 / count as f64)?
+            };
+            out.push(t);
+        }
+        Ok(out)
+    }
+
+    /// The parameters of the points at arc-length distances `0, length, 2·length, …` from the
+    /// start (Grasshopper's Divide Length). The end is included only when the curve's length is
+    /// a whole multiple of `length` (within the length tolerance), and on a closed curve the
+    /// seam is never repeated.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a length that is not positive and finite.
+    pub fn divide_by_length(&self, length: f64) -> Result<Vec<f64>> {
+        if !(length.is_finite() && length > 0.0) {
+            return Err(Error::InvalidInput(format!(
+                "division length {length} is not positive"
+            )));
+        }
+        let table = LengthTable::new(self, LENGTH_TOLERANCE);
+        let total = table.total();
+        let slack = 1e-9 * total;
+        let count = ((total + slack) / length).floor() as usize;
+        let closed = self.is_closed();
+        let mut out = Vec::with_capacity(count + 1);
+        for k in 0..=count {
+            let s = k as f64 * length;
+            if k > 0 && (s - total).abs() <= slack {
+                if !closed {
+                    out.push(self.domain().t1);
+                }
+                break;
+            }
+            out.push(table.parameter_at(self, s.min(total))?);
+        }
+        Ok(out)
+    }
+
+    /// Checks that `t` is finite and in the domain (with a relative slack of 1e-12).
+    pub(crate) fn check_parameter(&self, t: f64) -> Result<()> {
+        if !t.is_finite() {
+            return Err(Error::NotFinite { what: "parameter" });
+        }
+        let d = self.domain();
+        let slack = 1e-12 * (d.t0.abs().max(d.t1.abs()).max(d.length()));
+        if t < d.t0 - slack || t > d.t1 + slack {
+            return Err(Error::InvalidInput(format!(
+                "parameter {t} is outside the domain {} to {}",
+                d.t0, d.t1
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// The lengths of the spans of a curve, and their running sums.
+struct LengthTable {
+    /// The span ends `t_0 < t_1 < … < t_m`.
+    breaks: Vec<f64>,
+    /// `cumulative[i]` is the length from the start to `breaks[i]`.
+    cumulative: Vec<f64>,
+    /// The absolute tolerance used for lengths.
+    tolerance: f64,
+}
+
+impl LengthTable {
+    fn new(curve: &NurbsCurve, relative: f64) -> Self {
+        let breaks = curve.span_breaks();
+        let rough = curve.rough_length();
+        let tolerance = relative.max(1e-15) * rough.max(f64::MIN_POSITIVE);
+        let domain = curve.domain().length();
+        let mut cumulative = Vec::with_capacity(breaks.len());
+        cumulative.push(0.0);
+        let mut sum = 0.0;
+        for w in breaks.windows(2) {
+            let share = tolerance * (w[1] - w[0]) / domain;
+            sum += curve.span_length(w[0], w[1], share);
+            cumulative.push(sum);
+        }
+        Self {
+            breaks,
+            cumulative,
+            tolerance,
+        }
+    }
+
+    fn total(&self) -> f64 {
+        self.cumulative[self.cumulative.len() - 1]
+    }
+
+    /// The parameter at arc length `s` from the start.
+    fn parameter_at(&self, curve: &NurbsCurve, s: f64) -> Result<f64> {
+        if !s.is_finite() {
+            return Err(Error::NotFinite { what: "length" });
+        }
+        let total = self.total();
+        let slack = 1e-12 * total.max(f64::MIN_POSITIVE) + self.tolerance;
+        if s < -slack || s > total + slack {
+            return Err(Error::InvalidInput(format!(
+                "length {s} is outside the curve's length 0 to {total}"
+            )));
+        }
+        let s = s.clamp(0.0, total);
+        if s == 0.0 {
+            return Ok(self.breaks[0]);
+        }
+        if s == total {
+            return Ok(self.breaks[self.breaks.len() - 1]);
+        }
+        // The span whose cumulative range contains s.
+        let i = self
+            .cumulative
+            .partition_point(|&c| c <= s)
+            .saturating_sub(1)
+            .min(self.breaks.len() - 2);
+        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+        let target = s - self.cumulative[i];
+        let span_len = self.cumulative[i + 1] - self.cumulative[i];
+        if span_len <= 0.0 {
+            return Ok(a);
+        }
+        let local_tol = self.tolerance * 1e-2;
+        let (mut lo, mut hi) = (a, b);
+        let mut t = a + (b - a) * (target / span_len);
+        for _ in 0..100 {
+            let f = curve.span_length(a, t, local_tol) - target;
+            if f.abs() <= local_tol {
+                return Ok(t);
+            }
+            if f > 0.0 {
+                hi = t;
+            } else {
+                lo = t;
+            }
+            let speed = curve.speed_at(t);
+            let newton = t - f / speed;
+            t = if speed > 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if hi - lo <= 4.0 * f64::EPSILON * (a.abs().max(b.abs()).max(1.0)) {
+                return Ok(t);
+            }
+        }
+        Ok(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Circle, Line, Plane, Point3};
+    use std::f64::consts::TAU;
+
+    #[test]
+    fn gauss_legendre_integrates_polynomials_exactly() {
+        let (x, w) = gauss_legendre();
+        assert!((w.iter().sum::<f64>() - 2.0).abs() < 1e-14);
+        // ∫ x^18 over [−1, 1] = 2/19, exact for 10 nodes (degree ≤ 19).
+        let s: f64 = x.iter().zip(w).map(|(x, w)| w * x.powi(18)).sum();
+        assert!((s - 2.0 / 19.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn circle_and_line_lengths() {
+        let c = Circle::new(Plane::WORLD_XY, 3.0).unwrap().to_nurbs();
+        assert!((c.length() - 3.0 * TAU).abs() < 1e-11);
+        let quarter = c.length_between(0.0, TAU / 4.0).unwrap();
+        assert!((quarter - 3.0 * TAU / 4.0).abs() < 1e-11);
+        let l = Line::new(Point3::ORIGIN, Point3::new(3.0, 4.0, 0.0))
+            .to_nurbs()
+            .unwrap();
+        assert!((l.length() - 5.0).abs() < 1e-14);
+        assert!((l.parameter_at_length(2.0).unwrap() - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn parameter_at_length_inverts_length() {
+        let c = NurbsCurve::new(
+            3,
+            vec![
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 3.0, 0.0),
+                Point3::new(3.0, 4.0, 1.0),
+                Point3::new(5.0, 2.0, 0.0),
+                Point3::new(7.0, 5.0, 2.0),
+            ],
+            vec![1.0, 2.0, 0.5, 1.0, 1.0],
+            vec![0.0, 0.0, 0.0, 0.7, 2.0, 2.0, 2.0],
+        )
+        .unwrap();
+        let total = c.length();
+        for f in [0.1, 0.25, 0.5, 0.77, 0.99] {
+            let t = c.parameter_at_normalized_length(f).unwrap();
+            let l = c.length_between(0.0, t).unwrap();
+            assert!((l - f * total).abs() < 1e-10 * total, "f {f}");
+        }
+        assert!(c.parameter_at_length(-1.0).is_err());
+        assert!(c.parameter_at_length(total * 1.01).is_err());
+        assert!(c.parameter_at_length(f64::NAN).is_err());
+        assert!(c.length_between(0.0, 3.0).is_err());
+        assert_eq!(c.parameter_at_length(total).unwrap(), 2.0);
+    }
+
+    #[test]
+    fn divide_open_and_closed() {
+        let line = Line::new(Point3::ORIGIN, Point3::new(10.0, 0.0, 0.0))
+            .to_nurbs()
+            .unwrap();
+        let ts = line.divide_by_count(4).unwrap();
+        assert_eq!(ts.len(), 5);
+        for (k, t) in ts.iter().enumerate() {
+            assert!((t - 2.5 * k as f64).abs() < 1e-12);
+        }
+        let circle = Circle::new(Plane::WORLD_XY, 1.0).unwrap().to_nurbs();
+        let ts = circle.divide_by_count(4).unwrap();
+        assert_eq!(ts.len(), 4);
+        for (k, &t) in ts.iter().enumerate() {
+            let p = circle.point_at(t);
+            let angle = TAU * k as f64 / 4.0;
+            assert!(p.distance(Point3::new(angle.cos(), angle.sin(), 0.0)) < 1e-10);
+        }
+        // Divide Length: 10 / 3 gives 0, 3, 6, 9; 10 / 2.5 ends exactly at the end.
+        let by3 = line.divide_by_length(3.0).unwrap();
+        assert_eq!(by3.len(), 4);
+        assert!((by3[3] - 9.0).abs() < 1e-12);
+        let by25 = line.divide_by_length(2.5).unwrap();
+        assert_eq!(by25.len(), 5);
+        assert_eq!(by25[4], 10.0);
+        let around = circle.divide_by_length(TAU / 4.0).unwrap();
+        assert_eq!(around.len(), 4);
+        assert!(line.divide_by_count(0).is_err());
+        assert!(line.divide_by_length(0.0).is_err());
+        assert!(line.divide_by_length(f64::NAN).is_err());
+    }
+}

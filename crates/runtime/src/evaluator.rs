@@ -1,0 +1,658 @@
+//! Evaluating a checked graph: input collection, scheduling, caching and parallelism.
+//!
+//! An [`Evaluator`] owns one [`Plan`] and the latest outputs of every node. Evaluation runs the
+//! *dirty* nodes in topological order; setting a named input marks its node and everything
+//! downstream of it dirty, so the next evaluation recomputes only those (Grasshopper's expiry).
+//! Independent nodes of the same depth run in parallel, and large nodes split their iterations
+//! over threads (see `iterate`); every result is assembled in a fixed order, so outputs and
+//! messages are identical for any number of threads.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::Arc;
+
+use rayon::prelude::*;
+
+use crate::iterate::{NodeOutput, NodeRun, run_node};
+use crate::{DataTree, Level, Message, NodeError, NodeId, Plan, Prepared, collect};
+
+/// Why a host request could not be carried out.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum EvalError {
+    /// No named input has this name.
+    #[error("unknown input \"{name}\" (the graph's inputs are: {known})")]
+    UnknownInput {
+        /// The name asked for.
+        name: String,
+        /// The graph's input names, comma-separated.
+        known: String,
+    },
+    /// A thread pool could not be built.
+    #[error("cannot start {threads} threads: {reason}")]
+    ThreadPool {
+        /// The number of threads asked for.
+        threads: usize,
+        /// What went wrong.
+        reason: String,
+    },
+}
+
+/// How many threads evaluation may use.
+#[derive(Clone, Debug, Default)]
+enum Threads {
+    /// Rayon's global pool (one thread per core).
+    #[default]
+    Global,
+    /// Everything on the calling thread.
+    Serial,
+    /// A pool of its own.
+    Pool(Arc<rayon::ThreadPool>),
+}
+
+/// The state of one node between evaluations.
+#[derive(Clone, Debug, Default)]
+struct NodeState {
+    outputs: Vec<Arc<DataTree>>,
+    messages: Vec<Message>,
+    dirty: bool,
+    prepared: Option<Result<Prepared, NodeError>>,
+}
+
+/// A graph ready to evaluate, with its named inputs and the latest results.
+///
+/// ```
+/// use locus_runtime::{DataTree, Evaluator, Plan};
+/// # fn plan() -> Plan { Plan { nodes: vec![], order: vec![], inputs: vec![], outputs: vec![] } }
+/// let mut evaluator = Evaluator::new(plan());
+/// evaluator.evaluate();
+/// assert_eq!(evaluator.messages().count(), 0);
+/// ```
+#[derive(Debug)]
+pub struct Evaluator {
+    plan: Plan,
+    states: Vec<NodeState>,
+    overrides: Vec<Option<DataTree>>,
+    /// For each node, the nodes its outputs feed.
+    downstream: Vec<Vec<usize>>,
+    /// For each node, its depth: 0 for nodes without wired inputs, else 1 + the deepest source.
+    depth: Vec<usize>,
+    threads: Threads,
+    last_run: Vec<usize>,
+}
+
+impl Evaluator {
+    /// An evaluator for a checked plan; nothing runs until [`evaluate`](Self::evaluate).
+    pub fn new(plan: Plan) -> Self {
+        let n = plan.nodes.len();
+        let mut downstream = vec![Vec::new(); n];
+        for (i, node) in plan.nodes.iter().enumerate() {
+            for input in &node.inputs {
+                for &(source, _) in &input.sources {
+                    if source < n && !downstream[source].contains(&i) {
+                        downstream[source].push(i);
+                    }
+                }
+            }
+        }
+        let mut depth = vec![0; n];
+        for &i in &plan.order {
+            let d = plan.nodes[i]
+                .inputs
+                .iter()
+                .flat_map(|input| input.sources.iter())
+                .map(|&(source, _)| depth[source] + 1)
+                .max()
+                .unwrap_or(0);
+            depth[i] = d;
+        }
+        let states = plan
+            .nodes
+            .iter()
+            .map(|node| NodeState {
+                outputs: node
+                    .node_type
+                    .outputs
+                    .iter()
+                    .map(|_| Arc::new(DataTree::new()))
+                    .collect(),
+                messages: Vec::new(),
+                dirty: true,
+                prepared: None,
+            })
+            .collect();
+        let overrides = vec![None; plan.inputs.len()];
+        Self {
+            plan,
+            states,
+            overrides,
+            downstream,
+            depth,
+            threads: Threads::Global,
+            last_run: Vec::new(),
+        }
+    }
+
+    /// Limits evaluation to `threads` threads (1 runs everything on the calling thread).
+    ///
+    /// # Errors
+    /// [`EvalError::ThreadPool`] when the pool cannot be created.
+    pub fn set_threads(&mut self, threads: usize) -> Result<(), EvalError> {
+        self.threads = match threads {
+            0 => Threads::Global,
+            1 => Threads::Serial,
+            n => Threads::Pool(Arc::new(
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(n)
+                    .build()
+                    .map_err(|e| EvalError::ThreadPool {
+                        threads: n,
+                        reason: e.to_string(),
+                    })?,
+            )),
+        };
+        Ok(())
+    }
+
+    /// The plan being evaluated.
+    pub fn plan(&self) -> &Plan {
+        &self.plan
+    }
+
+    /// The names of the graph's inputs.
+    pub fn input_names(&self) -> impl Iterator<Item = &str> {
+        self.plan.inputs.iter().map(|(name, _, _)| name.as_str())
+    }
+
+    /// The names of the graph's outputs.
+    pub fn output_names(&self) -> impl Iterator<Item = &str> {
+        self.plan.outputs.iter().map(|(name, _, _)| name.as_str())
+    }
+
+    /// Gives a named input a value (replacing the value in the graph) and marks everything
+    /// downstream of it for re-evaluation.
+    ///
+    /// # Errors
+    /// [`EvalError::UnknownInput`] when the graph has no input of that name.
+    pub fn set_input(&mut self, name: &str, tree: DataTree) -> Result<(), EvalError> {
+        let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name) else {
+            return Err(EvalError::UnknownInput {
+                name: name.to_owned(),
+                known: self.input_names().collect::<Vec<_>>().join(", "),
+            });
+        };
+        if self.overrides[k].as_ref() == Some(&tree) {
+            return Ok(());
+        }
+        self.overrides[k] = Some(tree);
+        let node = self.plan.inputs[k].1;
+        self.mark_dirty(node);
+        Ok(())
+    }
+
+    /// Removes a value given with [`set_input`](Self::set_input), going back to the graph's.
+    pub fn clear_input(&mut self, name: &str) {
+        if let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name)
+            && self.overrides[k].take().is_some()
+        {
+            self.mark_dirty(self.plan.inputs[k].1);
+        }
+    }
+
+    /// Marks a node and everything downstream of it for re-evaluation.
+    fn mark_dirty(&mut self, node: usize) {
+        let mut stack = vec![node];
+        while let Some(i) = stack.pop() {
+            if i == node || !self.states[i].dirty {
+                self.states[i].dirty = true;
+                stack.extend(self.downstream[i].iter().copied());
+            }
+        }
+    }
+
+    /// Runs every node whose inputs changed since the last evaluation (all nodes the first
+    /// time), in topological order.
+    pub fn evaluate(&mut self) {
+        let threads = self.threads.clone();
+        match threads {
+            Threads::Serial => self.evaluate_dirty(false),
+            Threads::Global => self.evaluate_dirty(true),
+            Threads::Pool(pool) => pool.install(|| self.evaluate_dirty(true)),
+        }
+    }
+
+    fn evaluate_dirty(&mut self, parallel: bool) {
+        let dirty: Vec<usize> = self
+            .plan
+            .order
+            .iter()
+            .copied()
+            .filter(|&i| self.states[i].dirty)
+            .collect();
+        self.last_run = dirty.clone();
+        // Group by depth: nodes of one depth never feed each other.
+        let max_depth = dirty.iter().map(|&i| self.depth[i]).max().unwrap_or(0);
+        for d in 0..=max_depth {
+            let wave: Vec<usize> = dirty
+                .iter()
+                .copied()
+                .filter(|&i| self.depth[i] == d)
+                .collect();
+            if wave.is_empty() {
+                continue;
+            }
+            for &i in &wave {
+                self.ensure_prepared(i);
+            }
+            let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
+                wave.par_iter()
+                    .map(|&i| (i, self.run(i, parallel)))
+                    .collect()
+            } else {
+                wave.iter().map(|&i| (i, self.run(i, parallel))).collect()
+            };
+            for (i, out) in results {
+                let state = &mut self.states[i];
+                state.outputs = out.outputs.into_iter().map(Arc::new).collect();
+                state.messages = out.messages;
+                state.dirty = false;
+            }
+        }
+    }
+
+    fn ensure_prepared(&mut self, i: usize) {
+        if self.states[i].prepared.is_some() {
+            return;
+        }
+        let node = &self.plan.nodes[i];
+        let Some(prepare) = &node.node_type.prepare else {
+            return;
+        };
+        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
+        let config = crate::NodeConfig {
+            settings: &node.settings,
+            inputs: &ports,
+        };
+        let result = catch_unwind(AssertUnwindSafe(|| prepare(&config))).unwrap_or_else(|_| {
+            Err(NodeError(
+                "internal error: the node's prepare step panicked".to_owned(),
+            ))
+        });
+        self.states[i].prepared = Some(result);
+    }
+
+    /// Runs one node on the current outputs of its sources.
+    fn run(&self, i: usize, parallel: bool) -> NodeOutput {
+        let node = &self.plan.nodes[i];
+        let n_outputs = node.node_type.outputs.len();
+        let empty = || NodeOutput {
+            outputs: (0..n_outputs).map(|_| DataTree::new()).collect(),
+            messages: Vec::new(),
+        };
+        if node.disabled {
+            return empty();
+        }
+        let message = |level, text: String| Message {
+            node: node.id.clone(),
+            level,
+            path: None,
+            index: None,
+            text,
+        };
+        let prepared = match &self.states[i].prepared {
+            Some(Ok(p)) => Some(p),
+            Some(Err(e)) => {
+                let mut out = empty();
+                out.messages.push(message(Level::Error, e.0.clone()));
+                return out;
+            }
+            None => None,
+        };
+        // Collect every input: wires, graph inputs, values, defaults; then modifiers and casts.
+        let mut messages = Vec::new();
+        let mut data: Vec<std::borrow::Cow<'_, DataTree>> = Vec::with_capacity(node.inputs.len());
+        let mut missing = Vec::new();
+        for (k, input) in node.inputs.iter().enumerate() {
+            let raw = self.raw_input(i, k);
+            let collected = collect::prepare_input(&node.id, input, raw, &mut messages);
+            if !input.port.optional && collected.item_count() == 0 && collected.branch_count() == 0
+            {
+                missing.push(input.port.nickname.clone());
+            }
+            data.push(collected);
+        }
+        if !missing.is_empty() {
+            let mut out = empty();
+            out.messages = messages;
+            for name in missing {
+                out.messages.push(message(
+                    Level::Warning,
+                    format!("input parameter {name} failed to collect data"),
+                ));
+            }
+            return out;
+        }
+        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
+        let run = NodeRun {
+            node_id: &node.id,
+            node_type: &node.node_type,
+            inputs: &ports,
+            settings: &node.settings,
+            matching: node.matching,
+            principal: node.principal_input(),
+            prepared,
+        };
+        let refs: Vec<&DataTree> = data.iter().map(|d| &**d).collect();
+        match catch_unwind(AssertUnwindSafe(|| run_node(&run, &refs, parallel))) {
+            Ok(mut out) => {
+                messages.append(&mut out.messages);
+                out.messages = messages;
+                out
+            }
+            Err(payload) => {
+                let what = payload
+                    .downcast_ref::<&str>()
+                    .map(|s| (*s).to_owned())
+                    .or_else(|| payload.downcast_ref::<String>().cloned())
+                    .unwrap_or_default();
+                let mut out = empty();
+                out.messages = messages;
+                out.messages.push(message(
+                    Level::Error,
+                    format!("internal error: the node panicked ({what}); please report it"),
+                ));
+                out
+            }
+        }
+    }
+
+    /// The data arriving at input `k` of node `i` before modifiers and casts: the merged
+    /// outputs of the wired sources in wire order, else the graph input's value, else the
+    /// node's value or the port's default. `None` when there is none.
+    fn raw_input(&self, i: usize, k: usize) -> Option<std::borrow::Cow<'_, DataTree>> {
+        use std::borrow::Cow;
+        let input = &self.plan.nodes[i].inputs[k];
+        if let Some(slot) = self
+            .plan
+            .inputs
+            .iter()
+            .position(|&(_, node, port)| node == i && port == k)
+            && let Some(tree) = &self.overrides[slot]
+        {
+            return Some(Cow::Borrowed(tree));
+        }
+        match input.sources.as_slice() {
+            [] => input.value.as_ref().map(Cow::Borrowed),
+            [(node, output)] => Some(Cow::Borrowed(&*self.states[*node].outputs[*output])),
+            sources => {
+                let mut merged = DataTree::new();
+                for &(node, output) in sources {
+                    merged.merge(&self.states[node].outputs[output]);
+                }
+                Some(Cow::Owned(merged))
+            }
+        }
+    }
+
+    /// The data of a named output after the last evaluation.
+    pub fn output(&self, name: &str) -> Option<&DataTree> {
+        let &(_, node, port) = self.plan.outputs.iter().find(|(n, _, _)| n == name)?;
+        Some(&self.states[node].outputs[port])
+    }
+
+    /// Every named output with its data, in the graph's order.
+    pub fn outputs(&self) -> impl Iterator<Item = (&str, &DataTree)> {
+        self.plan
+            .outputs
+            .iter()
+            .map(|(name, node, port)| (name.as_str(), &*self.states[*node].outputs[*port]))
+    }
+
+    /// The data of output `port` (nickname or name) of node `node`.
+    pub fn node_output(&self, node: &str, port: &str) -> Option<&DataTree> {
+        let i = self.plan.nodes.iter().position(|n| n.id.0 == node)?;
+        let k = self.plan.nodes[i].node_type.output_index(port)?;
+        Some(&self.states[i].outputs[k])
+    }
+
+    /// The data of output `output` of the node at index `node` of the plan.
+    ///
+    /// # Panics
+    /// When the indices are out of range.
+    pub fn node_output_at(&self, node: usize, output: usize) -> &DataTree {
+        &self.states[node].outputs[output]
+    }
+
+    /// Every runtime message of the last evaluation (kept for nodes that did not re-run), in
+    /// the graph's node order.
+    pub fn messages(&self) -> impl Iterator<Item = &Message> {
+        self.states.iter().flat_map(|s| s.messages.iter())
+    }
+
+    /// The worst message level of a node, if it has messages.
+    pub fn node_level(&self, node: &str) -> Option<Level> {
+        let i = self.plan.nodes.iter().position(|n| n.id.0 == node)?;
+        self.states[i].messages.iter().map(|m| m.level).max()
+    }
+
+    /// The ids of the nodes that ran in the last evaluation, in the order they were scheduled.
+    pub fn last_run(&self) -> Vec<&NodeId> {
+        self.last_run
+            .iter()
+            .map(|&i| &self.plan.nodes[i].id)
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{DataType, Matching, NodeType, PlanInput, PlanNode, Port};
+
+    fn number_source() -> Arc<NodeType> {
+        Arc::new(
+            NodeType::new("test.number", "Number", "Num", "Params")
+                .input(Port::new("Number", "N", DataType::Number).list())
+                .output(Port::new("Number", "N", DataType::Number).list())
+                .solve(|s| {
+                    let v: Vec<f64> = s.list::<f64>(0)?.present().copied().collect();
+                    s.set_list(0, v);
+                    Ok(())
+                }),
+        )
+    }
+
+    fn addition() -> Arc<NodeType> {
+        Arc::new(
+            NodeType::new("test.add", "Addition", "A+B", "Maths")
+                .input(Port::new("A", "A", DataType::Number))
+                .input(Port::new("B", "B", DataType::Number))
+                .output(Port::new("Result", "R", DataType::Number))
+                .solve(|s| {
+                    let a = *s.item::<f64>(0)?;
+                    let b = *s.item::<f64>(1)?;
+                    s.set(0, a + b);
+                    Ok(())
+                }),
+        )
+    }
+
+    fn input(port: &Port, sources: Vec<(usize, usize)>, value: Option<DataTree>) -> PlanInput {
+        PlanInput {
+            port: port.clone(),
+            sources,
+            value,
+            modifiers: vec![],
+        }
+    }
+
+    fn node(id: &str, t: &Arc<NodeType>, inputs: Vec<PlanInput>) -> PlanNode {
+        PlanNode {
+            id: NodeId::from(id),
+            node_type: t.clone(),
+            inputs,
+            settings: vec![],
+            matching: Matching::Longest,
+            disabled: false,
+        }
+    }
+
+    /// a (number) ─┐
+    ///             ├─ sum1 (a + b) ── sum2 (sum1 + c)
+    /// b (number) ─┘
+    /// c (number) ─────────────────────┘
+    fn plan() -> Plan {
+        let num = number_source();
+        let add = addition();
+        let n = &num.inputs[0];
+        let nodes = vec![
+            node(
+                "a",
+                &num,
+                vec![input(n, vec![], Some(DataTree::from_list(vec![1.0, 2.0])))],
+            ),
+            node(
+                "b",
+                &num,
+                vec![input(n, vec![], Some(DataTree::from_item(10.0)))],
+            ),
+            node(
+                "c",
+                &num,
+                vec![input(n, vec![], Some(DataTree::from_item(100.0)))],
+            ),
+            node(
+                "sum1",
+                &add,
+                vec![
+                    input(&add.inputs[0], vec![(0, 0)], None),
+                    input(&add.inputs[1], vec![(1, 0)], None),
+                ],
+            ),
+            node(
+                "sum2",
+                &add,
+                vec![
+                    input(&add.inputs[0], vec![(3, 0)], None),
+                    input(&add.inputs[1], vec![(2, 0)], None),
+                ],
+            ),
+        ];
+        Plan {
+            nodes,
+            order: vec![0, 1, 2, 3, 4],
+            inputs: vec![("a".into(), 0, 0), ("c".into(), 2, 0)],
+            outputs: vec![("sum".into(), 4, 0)],
+        }
+    }
+
+    fn numbers(t: &DataTree) -> Vec<f64> {
+        t.values()
+            .map(|v| v.and_then(|v| v.get::<f64>()).unwrap_or(f64::NAN))
+            .collect()
+    }
+
+    #[test]
+    fn evaluates_in_topological_order() {
+        let mut e = Evaluator::new(plan());
+        e.evaluate();
+        assert_eq!(numbers(e.output("sum").unwrap()), [111.0, 112.0]);
+        assert_eq!(e.last_run().len(), 5);
+    }
+
+    #[test]
+    fn only_downstream_nodes_run_after_an_input_change() {
+        let mut e = Evaluator::new(plan());
+        e.evaluate();
+        e.set_input("c", DataTree::from_item(1000.0)).unwrap();
+        e.evaluate();
+        let ran: Vec<String> = e.last_run().iter().map(|id| id.0.clone()).collect();
+        assert_eq!(ran, ["c", "sum2"]);
+        assert_eq!(numbers(e.output("sum").unwrap()), [1011.0, 1012.0]);
+        e.set_input("a", DataTree::from_item(5.0)).unwrap();
+        e.evaluate();
+        let ran: Vec<String> = e.last_run().iter().map(|id| id.0.clone()).collect();
+        assert_eq!(ran, ["a", "sum1", "sum2"]);
+        e.evaluate();
+        assert!(e.last_run().is_empty());
+    }
+
+    #[test]
+    fn unknown_input_names_the_known_ones() {
+        let mut e = Evaluator::new(plan());
+        let err = e.set_input("z", DataTree::new()).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "unknown input \"z\" (the graph's inputs are: a, c)"
+        );
+    }
+
+    #[test]
+    fn disabled_nodes_output_nothing_and_downstream_warns() {
+        let mut p = plan();
+        p.nodes[1].disabled = true;
+        let mut e = Evaluator::new(p);
+        e.evaluate();
+        assert!(e.output("sum").unwrap().is_empty());
+        let texts: Vec<String> = e.messages().map(ToString::to_string).collect();
+        assert_eq!(
+            texts,
+            [
+                "warning: node \"sum1\": input parameter B failed to collect data",
+                "warning: node \"sum2\": input parameter A failed to collect data"
+            ]
+        );
+    }
+
+    #[test]
+    fn several_wires_into_one_input_merge_in_wire_order() {
+        let mut p = plan();
+        p.nodes[3].inputs[0].sources = vec![(2, 0), (0, 0)];
+        let mut e = Evaluator::new(p);
+        e.evaluate();
+        assert_eq!(
+            numbers(e.node_output("sum1", "R").unwrap()),
+            [110.0, 11.0, 12.0]
+        );
+    }
+
+    #[test]
+    fn thread_count_does_not_change_results() {
+        let mut results = Vec::new();
+        for threads in [1, 2, 0] {
+            let mut e = Evaluator::new(plan());
+            e.set_threads(threads).unwrap();
+            e.set_input(
+                "a",
+                DataTree::from_list((0..50_000).map(f64::from).collect()),
+            )
+            .unwrap();
+            e.evaluate();
+            results.push(e.output("sum").unwrap().clone());
+        }
+        assert_eq!(results[0], results[1]);
+        assert_eq!(results[0], results[2]);
+    }
+
+    #[test]
+    fn a_panicking_node_becomes_an_error_message() {
+        let mut p = plan();
+        let bad = Arc::new(
+            NodeType::new("test.bad", "Bad", "Bad", "Test")
+                .input(Port::new("A", "A", DataType::Number))
+                .output(Port::new("R", "R", DataType::Number))
+                .solve(|_| panic!("boom")),
+        );
+        p.nodes[4] = node(
+            "sum2",
+            &bad,
+            vec![input(&bad.inputs[0], vec![(3, 0)], None)],
+        );
+        let mut e = Evaluator::new(p);
+        let hook = std::panic::take_hook();
+        std::panic::set_hook(Box::new(|_| {}));
+        e.evaluate();
+        std::panic::set_hook(hook);
+        assert_eq!(e.node_level("sum2"), Some(Level::Error));
+        assert_eq!(numbers(e.node_output("sum1", "R").unwrap()), [11.0, 12.0]);
+    }
+}

@@ -1,0 +1,381 @@
+//! Node types: what a node is called, which ports it has and how it computes.
+//!
+//! A node type is declared once, with a builder:
+//!
+//! ```
+//! use locus_runtime::{Access, DataType, NodeType, Port};
+//! let dot = NodeType::new("vector.dot_product", "Dot Product", "DProd", "Vector")
+//!     .description("Computes the dot product of two vectors.")
+//!     .input(Port::new("Vector A", "A", DataType::Vector).doc("The first vector."))
+//!     .input(Port::new("Vector B", "B", DataType::Vector).doc("The second vector."))
+//!     .output(Port::new("Dot product", "D", DataType::Number).doc("A·B."))
+//!     .solve(|s| {
+//!         let a: locus_kernel::Vector3 = *s.item(0)?;
+//!         let b: locus_kernel::Vector3 = *s.item(1)?;
+//!         s.set(0, a.dot(b));
+//!         Ok(())
+//!     });
+//! assert_eq!(dot.inputs.len(), 2);
+//! ```
+
+use std::any::Any;
+use std::fmt;
+use std::sync::Arc;
+
+use crate::{DataType, Item, Solve, Value};
+
+/// How a port receives its data in one call of the node's solve function
+/// (Grasshopper's `GH_ParamAccess`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Access {
+    /// One item per call; the runtime iterates over items with the node's [`Matching`].
+    Item,
+    /// One whole branch per call.
+    List,
+    /// The whole tree in one call.
+    Tree,
+}
+
+impl Access {
+    /// The lower-case name used in docs and the CLI (`item`, `list`, `tree`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Access::Item => "item",
+            Access::List => "list",
+            Access::Tree => "tree",
+        }
+    }
+}
+
+/// How item-access inputs of different lengths are paired (Grasshopper's data matching).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Matching {
+    /// Shorter lists repeat their last item (the default).
+    #[default]
+    Longest,
+    /// Stop at the end of the shortest list.
+    Shortest,
+    /// Every combination; the first input varies fastest.
+    Cross,
+}
+
+/// A declared input or output of a node type.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Port {
+    /// Grasshopper's full port name, such as `Point A`.
+    pub name: String,
+    /// Grasshopper's nickname, such as `A`: the identifier used in graph files.
+    pub nickname: String,
+    /// What the port means, with units and default, for the node catalogue.
+    pub description: String,
+    /// The type items are cast to on the way in (inputs) or that the node writes (outputs).
+    pub data_type: DataType,
+    /// Item, list or tree access.
+    pub access: Access,
+    /// Whether an input may be left without data (the node still runs).
+    pub optional: bool,
+    /// The value an unconnected input takes when the graph gives none.
+    pub default: Option<Value>,
+}
+
+impl Port {
+    /// An item-access, required port without default.
+    pub fn new(name: &str, nickname: &str, data_type: DataType) -> Self {
+        Self {
+            name: name.to_owned(),
+            nickname: nickname.to_owned(),
+            description: String::new(),
+            data_type,
+            access: Access::Item,
+            optional: false,
+            default: None,
+        }
+    }
+
+    /// Sets the description.
+    pub fn doc(mut self, description: &str) -> Self {
+        self.description = description.to_owned();
+        self
+    }
+
+    /// Makes the port list access.
+    pub fn list(mut self) -> Self {
+        self.access = Access::List;
+        self
+    }
+
+    /// Makes the port tree access.
+    pub fn tree(mut self) -> Self {
+        self.access = Access::Tree;
+        self
+    }
+
+    /// Makes the input optional.
+    pub fn optional(mut self) -> Self {
+        self.optional = true;
+        self
+    }
+
+    /// Gives the input a default value (used when it has neither wire nor value).
+    pub fn default_value(mut self, value: impl Item) -> Self {
+        self.default = Some(value.into_value());
+        self
+    }
+
+    /// Whether `id` names this port: the nickname (exactly) or the full name (ignoring case).
+    pub fn is_named(&self, id: &str) -> bool {
+        self.nickname == id || self.name.eq_ignore_ascii_case(id)
+    }
+}
+
+/// The template for the inputs of a node with a variable number of inputs (Expression's
+/// variables, Merge's streams). A graph names the inputs of each such node.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VariableInputs {
+    /// The port every variable input is made from; its name and nickname are replaced.
+    pub template: Port,
+    /// The input names a new node starts with, such as `["x", "y"]`.
+    pub default_names: Vec<String>,
+}
+
+/// A node-level setting that is not a port, such as the Expression node's formula.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setting {
+    /// The name used in graph files (`expression`).
+    pub name: String,
+    /// What it means.
+    pub description: String,
+    /// The type of its value.
+    pub data_type: DataType,
+    /// The value when the graph gives none.
+    pub default: Option<Value>,
+}
+
+/// Why one call of a solve function failed. The runtime adds the node, tree path and item
+/// index to the message and leaves a null (or empty branch) in the outputs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NodeError(pub String);
+
+impl fmt::Display for NodeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for NodeError {}
+
+impl From<String> for NodeError {
+    fn from(s: String) -> Self {
+        Self(s)
+    }
+}
+
+impl From<&str> for NodeError {
+    fn from(s: &str) -> Self {
+        Self(s.to_owned())
+    }
+}
+
+impl From<locus_kernel::Error> for NodeError {
+    fn from(e: locus_kernel::Error) -> Self {
+        Self(e.to_string())
+    }
+}
+
+/// The function that computes a node: called once per iteration (item and list access) or
+/// once per evaluation (tree access only).
+pub type SolveFn = Arc<dyn Fn(&mut Solve<'_>) -> Result<(), NodeError> + Send + Sync>;
+
+/// Prepared per-node state, computed once per evaluation from the node's settings (for example
+/// a parsed formula), and shared by every iteration.
+pub type Prepared = Arc<dyn Any + Send + Sync>;
+
+/// The function that prepares per-node state from settings and input names.
+pub type PrepareFn = Arc<dyn Fn(&NodeConfig<'_>) -> Result<Prepared, NodeError> + Send + Sync>;
+
+/// What a prepare function sees of a node instance.
+#[derive(Debug)]
+pub struct NodeConfig<'a> {
+    /// The node's settings, with defaults filled in.
+    pub settings: &'a [(String, Value)],
+    /// The node's input ports (after variable inputs are resolved).
+    pub inputs: &'a [Port],
+}
+
+impl NodeConfig<'_> {
+    /// The value of a setting.
+    pub fn setting(&self, name: &str) -> Option<&Value> {
+        self.settings
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v)
+    }
+}
+
+/// A node type: identity, documentation, ports and behaviour.
+#[derive(Clone)]
+pub struct NodeType {
+    /// The stable identifier used in graph files, `category.name` (`vector.dot_product`).
+    pub id: String,
+    /// Grasshopper's display name (`Dot Product`).
+    pub name: String,
+    /// Grasshopper's nickname (`DProd`).
+    pub nickname: String,
+    /// The category (`Vector`), as in Grasshopper's tabs.
+    pub category: String,
+    /// The subcategory (`Vector`, `Point`, …), as in Grasshopper's panels.
+    pub subcategory: String,
+    /// What the node does, for users.
+    pub description: String,
+    /// The inputs, in order.
+    pub inputs: Vec<Port>,
+    /// The outputs, in order.
+    pub outputs: Vec<Port>,
+    /// Present when the inputs are variable; `inputs` then holds the default set.
+    pub variable_inputs: Option<VariableInputs>,
+    /// Node-level settings.
+    pub settings: Vec<Setting>,
+    /// The solve function.
+    pub solve: SolveFn,
+    /// The optional prepare function.
+    pub prepare: Option<PrepareFn>,
+}
+
+impl fmt::Debug for NodeType {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("NodeType")
+            .field("id", &self.id)
+            .field("name", &self.name)
+            .field("inputs", &self.inputs)
+            .field("outputs", &self.outputs)
+            .finish_non_exhaustive()
+    }
+}
+
+impl NodeType {
+    /// A node type with no ports that does nothing; add ports and a solve function with the
+    /// builder methods.
+    pub fn new(id: &str, name: &str, nickname: &str, category: &str) -> Self {
+        Self {
+            id: id.to_owned(),
+            name: name.to_owned(),
+            nickname: nickname.to_owned(),
+            category: category.to_owned(),
+            subcategory: String::new(),
+            description: String::new(),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            variable_inputs: None,
+            settings: Vec::new(),
+            solve: Arc::new(|_| Ok(())),
+            prepare: None,
+        }
+    }
+
+    /// Sets the subcategory.
+    pub fn subcategory(mut self, subcategory: &str) -> Self {
+        self.subcategory = subcategory.to_owned();
+        self
+    }
+
+    /// Sets the description.
+    pub fn description(mut self, description: &str) -> Self {
+        self.description = description.to_owned();
+        self
+    }
+
+    /// Adds an input.
+    pub fn input(mut self, port: Port) -> Self {
+        self.inputs.push(port);
+        self
+    }
+
+    /// Adds an output.
+    pub fn output(mut self, port: Port) -> Self {
+        self.outputs.push(port);
+        self
+    }
+
+    /// Makes the inputs variable: each graph node names its inputs, all made from `template`;
+    /// `default_names` are the inputs of a node that names none.
+    pub fn variable_inputs(mut self, template: Port, default_names: &[&str]) -> Self {
+        self.inputs = default_names
+            .iter()
+            .map(|n| variable_port(&template, n))
+            .collect();
+        self.variable_inputs = Some(VariableInputs {
+            template,
+            default_names: default_names.iter().map(|s| (*s).to_owned()).collect(),
+        });
+        self
+    }
+
+    /// Adds a setting.
+    pub fn setting(
+        mut self,
+        name: &str,
+        data_type: DataType,
+        default: Option<Value>,
+        description: &str,
+    ) -> Self {
+        self.settings.push(Setting {
+            name: name.to_owned(),
+            description: description.to_owned(),
+            data_type,
+            default,
+        });
+        self
+    }
+
+    /// Sets the solve function.
+    pub fn solve(
+        mut self,
+        f: impl Fn(&mut Solve<'_>) -> Result<(), NodeError> + Send + Sync + 'static,
+    ) -> Self {
+        self.solve = Arc::new(f);
+        self
+    }
+
+    /// Sets the prepare function.
+    pub fn prepare(
+        mut self,
+        f: impl Fn(&NodeConfig<'_>) -> Result<Prepared, NodeError> + Send + Sync + 'static,
+    ) -> Self {
+        self.prepare = Some(Arc::new(f));
+        self
+    }
+
+    /// The input ports of a node instance that names `names` as its variable inputs (or the
+    /// declared inputs when the type has fixed inputs or `names` is `None`).
+    pub fn resolve_inputs(&self, names: Option<&[String]>) -> Vec<Port> {
+        match (&self.variable_inputs, names) {
+            (Some(var), Some(names)) => names
+                .iter()
+                .map(|n| variable_port(&var.template, n))
+                .collect(),
+            _ => self.inputs.clone(),
+        }
+    }
+
+    /// The index of the input named `id` (nickname or full name).
+    pub fn input_index(&self, id: &str) -> Option<usize> {
+        self.inputs.iter().position(|p| p.is_named(id))
+    }
+
+    /// The index of the output named `id` (nickname or full name).
+    pub fn output_index(&self, id: &str) -> Option<usize> {
+        self.outputs.iter().position(|p| p.is_named(id))
+    }
+
+    /// Whether every input is tree access (or there are no inputs): the node solves once.
+    pub fn solves_once(inputs: &[Port]) -> bool {
+        inputs.iter().all(|p| p.access == Access::Tree)
+    }
+}
+
+fn variable_port(template: &Port, name: &str) -> Port {
+    let mut p = template.clone();
+    p.name = name.to_owned();
+    p.nickname = name.to_owned();
+    p
+}
