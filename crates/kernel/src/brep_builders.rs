@@ -4,8 +4,8 @@
 use crate::brep::{Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, LoopKind, TrimKind};
 use crate::surface_direction::{SurfaceDirection, SurfaceSide};
 use crate::{
-    Circle, Cone, Cylinder, Error, Interval, Line, NurbsCurve, NurbsSurface, Plane, Point3, Result,
-    Sphere, Vector3,
+    Circle, Cone, Cylinder, Error, Interval, Line, NurbsCurve, NurbsSurface, OrientedBox, Plane,
+    Point3, Result, Sphere, Vector3,
 };
 
 /// Assembles a B-rep part by part; [`Builder::finish`] links the topology.
@@ -193,28 +193,18 @@ impl Brep {
         Ok(brep)
     }
 
-    /// The box `plane.point_at(x, y, z)` for `x`, `y`, `z` in the three intervals (Grasshopper's
-    /// box: a plane and three domains). Decreasing intervals are sorted.
+    /// The B-rep of an oriented box (Rhino's `Brep.CreateFromBox(Box)`, Grasshopper's box
+    /// as a B-rep): [`from_box_corners`](Self::from_box_corners) on the box's corners, after
+    /// making its intervals increasing.
     ///
     /// # Errors
-    /// [`Error::NotFinite`] for non-finite input, [`Error::ZeroLength`] if an interval has
-    /// zero length.
-    pub fn from_plane_box(plane: &Plane, x: Interval, y: Interval, z: Interval) -> Result<Self> {
-        if !plane.is_finite() || !x.is_finite() || !y.is_finite() || !z.is_finite() {
+    /// [`Error::NotFinite`] for a non-finite box, [`Error::ZeroLength`] for a flat box (an
+    /// interval of zero length).
+    pub fn from_box(oriented_box: &OrientedBox) -> Result<Self> {
+        if !oriented_box.is_finite() {
             return Err(Error::NotFinite { what: "box" });
         }
-        let (x0, x1, y0, y1, z0, z1) = (x.min(), x.max(), y.min(), y.max(), z.min(), z.max());
-        let corners = [
-            plane.point_at(x0, y0, z0),
-            plane.point_at(x1, y0, z0),
-            plane.point_at(x1, y1, z0),
-            plane.point_at(x0, y1, z0),
-            plane.point_at(x0, y0, z1),
-            plane.point_at(x1, y0, z1),
-            plane.point_at(x1, y1, z1),
-            plane.point_at(x0, y1, z1),
-        ];
-        Self::from_box_corners(&corners)
+        Self::from_box_corners(&oriented_box.made_increasing().corners())
     }
 
     /// One untrimmed face on a whole surface (Rhino's `Brep.CreateFromSurface`): the outer loop

@@ -395,7 +395,7 @@ fn scale(m: &Moments, s: f64) -> Moments {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Cone, Cylinder, Interval, Plane, Sphere, Transform};
+    use crate::{Cone, Cylinder, Interval, OrientedBox, Plane, Sphere, Transform};
     use std::f64::consts::PI;
 
     fn rel(a: f64, b: f64) -> f64 {
@@ -414,12 +414,12 @@ mod tests {
         let plane =
             Plane::from_normal(Point3::new(100.0, -50.0, 20.0), Vector3::new(1.0, 2.0, 2.0))
                 .unwrap();
-        let b = Brep::from_plane_box(
-            &plane,
+        let b = Brep::from_box(&OrientedBox::new(
+            plane,
             Interval::new(-1.0, 1.0),
             Interval::new(0.0, 3.0),
-            Interval::new(2.0, 6.0),
-        )
+            Interval::new(6.0, 2.0),
+        ))
         .unwrap();
         let a = b.area_properties().unwrap();
         let v = b.volume_properties().unwrap();

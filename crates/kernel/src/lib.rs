@@ -47,6 +47,7 @@ mod oriented_box;
 mod plane;
 mod point;
 mod polyline;
+mod surface_bounding_box;
 mod surface_closest_point;
 mod surface_curvature;
 mod surface_derivatives;

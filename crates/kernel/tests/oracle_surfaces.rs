@@ -9,7 +9,8 @@ mod support;
 use std::collections::HashMap;
 
 use locus_kernel::{
-    Brep, Cone, Cylinder, Interval, NurbsSurface, Plane, Point3, Sphere, SurfaceSide, Vector3,
+    Brep, Cone, Cylinder, Interval, NurbsSurface, OrientedBox, Plane, Point3, Sphere, SurfaceSide,
+    Vector3,
 };
 use serde_json::Value;
 use support::{Failures, close, close3, load_oracle, num, numbers, triple};
@@ -431,12 +432,12 @@ fn opennurbs_brep_topology() {
                 s.split(',').map(|x| x.parse().expect("a number")).collect()
             };
             let (a, b) = (parse(a), parse(b));
-            Brep::from_plane_box(
-                &Plane::WORLD_XY,
+            Brep::from_box(&OrientedBox::new(
+                Plane::WORLD_XY,
                 Interval::new(a[0], b[0]),
                 Interval::new(a[1], b[1]),
                 Interval::new(a[2], b[2]),
-            )
+            ))
         } else if let Some(r) = case_name.strip_prefix("sphere-r") {
             Brep::from_sphere(
                 &Sphere::new(Point3::ORIGIN, r.parse().expect("a radius")).expect("sphere"),
