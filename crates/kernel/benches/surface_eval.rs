@@ -9,7 +9,7 @@
 //! Run with `cargo bench -p locus-kernel --bench surface_eval`.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use locus_kernel::{NurbsSurface, Point3};
+use locus_kernel::{Brep, Cylinder, NurbsSurface, Plane, Point3, Sphere};
 use std::hint::black_box;
 
 const N: usize = 1000;
@@ -74,5 +74,51 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+/// Area and volume of B-reps by adaptive Gauss–Legendre quadrature, and closest points on
+/// the bicubic surface, for scale.
+fn bench_brep(c: &mut Criterion) {
+    let mut group = c.benchmark_group("brep_mass");
+    group.sample_size(20);
+    let sphere =
+        Brep::from_sphere(&Sphere::new(Point3::ORIGIN, 2.0).expect("sphere")).expect("sphere brep");
+    let cylinder = Brep::from_cylinder(
+        &Cylinder::new(Plane::WORLD_XY, 1.5, 4.0).expect("cylinder"),
+        true,
+    )
+    .expect("cylinder brep");
+    group.bench_function("sphere/area", |b| {
+        b.iter(|| black_box(&sphere).area_properties().expect("area"));
+    });
+    group.bench_function("sphere/volume", |b| {
+        b.iter(|| black_box(&sphere).volume_properties().expect("volume"));
+    });
+    group.bench_function("capped_cylinder/volume", |b| {
+        b.iter(|| black_box(&cylinder).volume_properties().expect("volume"));
+    });
+    group.finish();
+
+    let mut group = c.benchmark_group("surface_closest_point");
+    let surface = bicubic(true);
+    let tests: Vec<Point3> = (0..100)
+        .map(|k| {
+            let t = k as f64 * 0.37;
+            Point3::new(
+                7.0 * (0.5 + 0.5 * t.sin()),
+                7.0 * (0.5 + 0.5 * (1.3 * t).cos()),
+                2.0 * (0.7 * t).sin(),
+            )
+        })
+        .collect();
+    group.throughput(Throughput::Elements(tests.len() as u64));
+    group.bench_function("bicubic_rational_8x8", |b| {
+        b.iter(|| {
+            for &p in &tests {
+                black_box(surface.closest_point(black_box(p)).expect("closest point"));
+            }
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench, bench_brep);
 criterion_main!(benches);
