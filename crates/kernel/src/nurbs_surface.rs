@@ -8,9 +8,7 @@
 //! `i · count_v + j`: rows run along `u`, and each row holds the `count_v` points of one
 //! `v` column, exactly like the `cvs_u_by_v[i][j]` arrays of the reference cases.
 
-use crate::basis::{
-    MAX_DEGREE, MAX_ORDER, basis_function_derivatives, basis_functions, span_index,
-};
+use crate::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
 use crate::surface_direction::SurfaceDirection;
 use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 
