@@ -345,6 +345,17 @@ impl Brep {
         }
     }
 
+    /// Whether face `f` is its whole surface: one loop, every trim along a side of the
+    /// parameter rectangle.
+    pub(crate) fn is_untrimmed(&self, f: usize) -> bool {
+        let face = &self.faces[f];
+        face.loops.len() == 1
+            && self.loops[face.loops[0]]
+                .trims
+                .iter()
+                .all(|&t| self.trim_side(t).is_some())
+    }
+
     /// The side of a face's parameter rectangle that a trim runs along, if it runs exactly
     /// along one (an iso-parametric trim on the boundary).
     pub fn trim_side(&self, trim: usize) -> Option<SurfaceSide> {

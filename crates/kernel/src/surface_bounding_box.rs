@@ -224,17 +224,6 @@ impl Brep {
         bbox
     }
 
-    /// Whether face `f` is its whole surface: one loop, every trim along a side of the
-    /// parameter rectangle.
-    fn is_untrimmed(&self, f: usize) -> bool {
-        let face = &self.faces[f];
-        face.loops.len() == 1
-            && self.loops[face.loops[0]]
-                .trims
-                .iter()
-                .all(|&t| self.trim_side(t).is_some())
-    }
-
     /// The face's loops as polygons in parameter space, each trim sampled densely per span.
     fn face_polygons(&self, f: usize) -> Vec<Vec<(f64, f64)>> {
         self.faces[f]
