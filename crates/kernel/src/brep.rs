@@ -118,6 +118,29 @@ pub enum EdgeKind {
 }
 
 /// A boundary representation: faces, loops, trims, edges and vertices.
+///
+/// # Examples
+/// ```
+/// use locus_kernel::{Brep, EdgeKind, Interval, OrientedBox, Plane};
+/// # fn main() -> locus_kernel::Result<()> {
+/// let b = Brep::from_box(&OrientedBox::new(
+///     Plane::WORLD_XY,
+///     Interval::new(0.0, 2.0),
+///     Interval::new(0.0, 3.0),
+///     Interval::new(0.0, 4.0),
+/// ))?;
+/// assert_eq!((b.faces().len(), b.edges().len(), b.vertices().len()), (6, 12, 8));
+/// assert!(b.is_solid());
+/// // Planar faces are integrated exactly, up to rounding.
+/// assert!((b.volume()? - 24.0).abs() < 1e-13);
+///
+/// // Deconstruct it: each face on its own has four naked edges and an area.
+/// let top = b.extract_face(5)?;
+/// assert_eq!(top.edges_of_kind(EdgeKind::Naked).len(), 4);
+/// assert!((top.area()? - 6.0).abs() < 1e-13);
+/// # Ok(())
+/// # }
+/// ```
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Brep {
     pub(crate) faces: Vec<BrepFace>,

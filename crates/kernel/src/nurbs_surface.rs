@@ -20,6 +20,27 @@ use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 /// likewise in `v`.
 ///
 /// Instances are always valid: every constructor checks degrees, counts, knots and weights.
+///
+/// # Examples
+/// ```
+/// use locus_kernel::{Point3, Sphere};
+/// # fn main() -> locus_kernel::Result<()> {
+/// // Rhino's sphere of radius 2: degree 2 × 2, 9 × 5 control points.
+/// let sphere = Sphere::new(Point3::ORIGIN, 2.0)?.to_nurbs()?;
+/// assert_eq!((sphere.count_u(), sphere.count_v()), (9, 5));
+///
+/// // The book's Pull: the closest point to a point outside, with its parameters.
+/// let cp = sphere.closest_point(Point3::new(0.0, 3.0, 4.0))?;
+/// assert!((cp.distance - 3.0).abs() < 1e-12);
+/// let normal = sphere.normal_at(cp.u, cp.v)?;
+/// assert!((normal.y - 0.6).abs() < 1e-12 && (normal.z - 0.8).abs() < 1e-12);
+///
+/// // Curvatures are signed against the outward normal, as in Rhino.
+/// let k = sphere.curvature_at(cp.u, cp.v)?;
+/// assert!((k.gaussian - 0.25).abs() < 1e-12 && (k.mean + 0.5).abs() < 1e-12);
+/// # Ok(())
+/// # }
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
     pub(crate) degree_u: usize,
