@@ -248,6 +248,8 @@ fn occt_surface_closest_points() {
     let mut failures = Failures::default();
     let mut total = 0;
     let mut worst_distance: f64 = 0.0;
+    let mut worst_point: f64 = 0.0;
+    let mut worst_parameter: f64 = 0.0;
     for case in file["surface_closest_point"]
         .as_array()
         .expect("surface_closest_point")
@@ -274,6 +276,7 @@ fn occt_surface_closest_points() {
                     cp.distance, cp.u, cp.v, query["u"], query["v"], query["at"]
                 )
             });
+            worst_point = worst_point.max(cp.point.distance(point(&query["point"])));
             failures.check(
                 close3(cp.point.to_array(), triple(&query["point"]), 1e-6),
                 || format!("{label}: point {:?}, expected {}", cp.point, query["point"]),
@@ -299,6 +302,11 @@ fn occt_surface_closest_points() {
                             .any(|&end| (cp.u - end).abs() <= 1e-6 * du.length())
                         && (eu == du.t0 || eu == du.t1));
                 let v_ok = (cp.v - ev).abs() <= 1e-6 * dv.length();
+                if !u_arbitrary && !seam {
+                    worst_parameter = worst_parameter
+                        .max((cp.u - eu).abs() / du.length())
+                        .max((cp.v - ev).abs() / dv.length());
+                }
                 total += 1;
                 failures.check(u_ok && v_ok, || {
                     format!(
@@ -309,7 +317,10 @@ fn occt_surface_closest_points() {
             }
         }
     }
-    eprintln!("surface closest points: worst relative distance deviation {worst_distance:e}");
+    eprintln!(
+        "surface closest points: worst relative distance deviation {worst_distance:e}, point \
+         {worst_point:e}, parameter (per domain length) {worst_parameter:e}"
+    );
     assert!(total > 0, "no cases in occt surface_closest_point");
     failures.finish("occt surface_closest_point");
 }
