@@ -179,6 +179,33 @@ impl Brep {
     }
 }
 
+impl NurbsSurface {
+    /// The area and area centroid of the whole surface (Grasshopper's Area on an untrimmed
+    /// surface), by the same quadrature as [`Brep::area_properties`].
+    ///
+    /// # Errors
+    /// [`Error::Degenerate`] for a surface of zero area.
+    pub fn area_properties(&self) -> Result<AreaProperties> {
+        let frame = Frame::around(std::iter::once(self))?;
+        let m = FaceIntegrator::new(self, false, &frame).whole_surface();
+        if m.iter().any(|x| !x.is_finite()) {
+            return Err(Error::NotFinite {
+                what: "mass property",
+            });
+        }
+        if m[0] <= 0.0 {
+            return Err(Error::Degenerate {
+                what: "surface area",
+            });
+        }
+        let l = frame.size;
+        Ok(AreaProperties {
+            area: m[0] * l * l,
+            centroid: frame.center + Vector3::new(m[1], m[2], m[3]) * (l / m[0]),
+        })
+    }
+}
+
 /// The centre and size used to scale coordinates.
 #[derive(Clone, Copy, Debug)]
 struct Frame {
@@ -614,6 +641,7 @@ mod tests {
         let centre = Point3::new(1.0, -2.0, 0.5);
         let b = Brep::from_sphere(&Sphere::new(centre, 2.0).unwrap()).unwrap();
         let a = b.area_properties().unwrap();
+        assert_eq!(a, b.faces()[0].surface.area_properties().unwrap());
         let v = b.volume_properties().unwrap();
         assert!(rel(a.area, 16.0 * PI) < 1e-12, "{}", rel(a.area, 16.0 * PI));
         assert!(
