@@ -100,6 +100,20 @@ pub fn value_json(value: &Value) -> Json {
             "knots_u": s.knots_u().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
             "knots_v": s.knots_v().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
         }}),
+        Value::Brep(b) => json!({ "brep": {
+            "faces": b.faces().len(),
+            "edges": b.edges().iter().map(|e| {
+                let c = &e.curve;
+                json!({
+                    "degree": c.degree(),
+                    "points": c.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
+                    "weights": c.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
+                    "knots": c.knots().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+                    "vertices": e.vertices,
+                })
+            }).collect::<Vec<_>>(),
+            "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
+        }}),
     }
 }
 

@@ -17,7 +17,7 @@ use std::borrow::Cow;
 use std::fmt;
 
 use locus_kernel::{
-    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
     Vector3,
 };
 
@@ -57,7 +57,8 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Line | Circle | Arc, Curve)
             | (Line | Circle | Arc | Curve, Number)
             | (Curve, Line | Circle | Arc)
-            | (Box | Line | Circle | Arc | Curve | Surface, Text)
+            | (Box | Line | Circle | Arc | Curve | Surface | Brep, Text)
+            | (Box | Surface, Brep)
     )
 }
 
@@ -332,6 +333,10 @@ cast_table! {
     Circle(Circle) => Text(String) = |c: &Circle| Some(format_value(&Value::Circle(*c)));
     Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_value(&Value::Arc(*a)));
     Curve(Shared<Curve>) => Text(String) = |c: &Shared<Curve>| Some(format_value(&Value::Curve(c.clone())));
+    Box(OrientedBox) => Brep(Shared<Brep>) = |b: &OrientedBox| Brep::from_box(b).ok().map(Shared::new);
+    Surface(Shared<NurbsSurface>) => Brep(Shared<Brep>) =
+        |s: &Shared<NurbsSurface>| Brep::from_surface((**s).clone()).ok().map(Shared::new);
+    Brep(Shared<Brep>) => Text(String) = |b: &Shared<Brep>| Some(format_value(&Value::Brep(b.clone())));
     Surface(Shared<NurbsSurface>) => Text(String) =
         |s: &Shared<NurbsSurface>| Some(format_value(&Value::Surface(s.clone())));
 }
@@ -396,6 +401,7 @@ mod tests {
             DataType::Surface => vec![Value::Surface(Shared::new(
                 NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
             ))],
+            DataType::Brep => vec![Value::Brep(Shared::new(Brep::default()))],
             DataType::Generic => Vec::new(),
         }
     }

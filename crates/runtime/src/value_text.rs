@@ -193,6 +193,19 @@ pub fn format_value(value: &Value) -> String {
             s.count_u(),
             s.count_v()
         ),
+        Value::Brep(b) => format!(
+            "Brep ({} face{}, {} edge{}, {} vert{})",
+            b.faces().len(),
+            if b.faces().len() == 1 { "" } else { "s" },
+            b.edges().len(),
+            if b.edges().len() == 1 { "" } else { "s" },
+            b.vertices().len(),
+            if b.vertices().len() == 1 {
+                "ex"
+            } else {
+                "ices"
+            }
+        ),
     }
 }
 
