@@ -6,7 +6,19 @@
 //! point). Both write into the same preallocated buffer. Criterion reports the throughput in
 //! points per second (elements/s); the target for `grid` is 60 million points per second.
 //!
-//! Run with `cargo bench -p locus-kernel --bench surface_eval`.
+//! Run with `cargo bench -p locus-kernel --bench surface_eval`. Results on the shared 2-core
+//! development machine (load average 8 to 12; CPU time of the evaluating thread in brackets):
+//!
+//! | benchmark | result |
+//! | --- | --- |
+//! | `bicubic/grid` | 49–97 M points/s (176 M points/s CPU) |
+//! | `bicubic/pointwise` | 2.0–4.6 M points/s (9.2 M points/s CPU): grid/pointwise 19× |
+//! | `bicubic_rational/grid` | 28–73 M points/s (111 M points/s CPU) |
+//! | `bicubic_rational/pointwise` | 2.0–4.6 M points/s (7.5 M points/s CPU): 15× |
+//! | `brep_mass/sphere/area` | 1.3–4.7 ms (0.45 ms CPU) |
+//! | `brep_mass/sphere/volume` | 1.2–4.9 ms (0.41 ms CPU) |
+//! | `brep_mass/capped_cylinder/volume` | 2.7–6.7 ms (1.9 ms CPU) |
+//! | `surface_closest_point/bicubic_rational_8x8` | 5.3–7.0 K queries/s (14 K queries/s CPU) |
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use locus_kernel::{Brep, Cylinder, NurbsSurface, Plane, Point3, Sphere};
