@@ -16,17 +16,25 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use locus_kernel::{Interval, Plane, Point3, Vector3};
+use locus_kernel::{
+    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Vector3,
+};
 
+use crate::cast_geometry::{
+    arc_to_box, circle_plane, circle_to_box, curve_length, curve_to_arc, curve_to_box,
+    curve_to_circle, curve_to_line, line_to_box, point_to_box, surface_to_box,
+};
 use crate::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
     text_to_boolean, text_to_domain, text_to_integer,
 };
 use crate::value_text::{
-    format_boolean, format_domain, format_number, format_plane, format_point, format_transform,
+    format_arc, format_boolean, format_box, format_circle, format_curve, format_domain,
+    format_line, format_number, format_plane, format_point, format_surface, format_transform,
     format_value, format_vector, parse_number, write_quoted,
 };
-use crate::{Branch, DataTree, DataType, Item, TreePath, Value};
+use crate::{Branch, DataTree, DataType, Item, Shared, TreePath, Value};
 
 /// Whether items of type `from` can in general be cast to `to`, for checking wires before
 /// running. Individual items may still fail (text that is not a number) and are then reported
@@ -51,6 +59,14 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Plane, Point)
             | (Domain, Number)
             | (Point | Vector | Plane | Domain | Transform, Text)
+            | (Point | Line | Circle | Arc | Curve | Surface, Box)
+            | (Line | Circle | Arc, Curve)
+            | (Curve, Line | Circle | Arc)
+            | (Line | Circle | Arc | Curve, Number)
+            | (Curve, Domain)
+            | (Circle | Arc | Box, Plane)
+            | (Line, Vector)
+            | (Box | Line | Circle | Arc | Curve | Surface, Text)
     )
 }
 
@@ -301,6 +317,34 @@ cast_table! {
     Domain(Interval) => Text(String) = |d: &Interval| Some(format_domain(*d));
     Transform(locus_kernel::Transform) => Text(String) =
         |t: &locus_kernel::Transform| Some(format_transform(t));
+    Point(Point3) => Box(OrientedBox) = point_to_box;
+    Line(Line) => Box(OrientedBox) = line_to_box;
+    Circle(Circle) => Box(OrientedBox) = circle_to_box;
+    Arc(ArcCurve) => Box(OrientedBox) = arc_to_box;
+    Curve(Shared<Curve>) => Box(OrientedBox) = curve_to_box;
+    Surface(Shared<NurbsSurface>) => Box(OrientedBox) = surface_to_box;
+    Line(Line) => Curve(Shared<Curve>) = |l: &Line| Some(Shared::new(Curve::from(*l)));
+    Circle(Circle) => Curve(Shared<Curve>) = |c: &Circle| Some(Shared::new(Curve::from(*c)));
+    Arc(ArcCurve) => Curve(Shared<Curve>) = |a: &ArcCurve| Some(Shared::new(Curve::from(*a)));
+    Curve(Shared<Curve>) => Line(Line) = curve_to_line;
+    Curve(Shared<Curve>) => Circle(Circle) = curve_to_circle;
+    Curve(Shared<Curve>) => Arc(ArcCurve) = curve_to_arc;
+    Line(Line) => Number(f64) = |l: &Line| Some(l.length()).filter(|x| x.is_finite());
+    Circle(Circle) => Number(f64) = |c: &Circle| Some(c.circumference()).filter(|x| x.is_finite());
+    Arc(ArcCurve) => Number(f64) = |a: &ArcCurve| Some(a.length()).filter(|x| x.is_finite());
+    Curve(Shared<Curve>) => Number(f64) = curve_length;
+    Curve(Shared<Curve>) => Domain(Interval) = |c: &Shared<Curve>| Some(c.domain());
+    Circle(Circle) => Plane(Plane) = circle_plane;
+    Arc(ArcCurve) => Plane(Plane) = |a: &ArcCurve| circle_plane(&a.circle);
+    Box(OrientedBox) => Plane(Plane) = |b: &OrientedBox| Some(b.plane);
+    Line(Line) => Vector(Vector3) = |l: &Line| Some(l.direction());
+    Box(OrientedBox) => Text(String) = |b: &OrientedBox| Some(format_box(b));
+    Line(Line) => Text(String) = |l: &Line| Some(format_line(l));
+    Circle(Circle) => Text(String) = |c: &Circle| Some(format_circle(c));
+    Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_arc(a));
+    Curve(Shared<Curve>) => Text(String) = |c: &Shared<Curve>| Some(format_curve(c));
+    Surface(Shared<NurbsSurface>) => Text(String) =
+        |s: &Shared<NurbsSurface>| Some(format_surface(s));
 }
 
 #[cfg(test)]
@@ -319,6 +363,18 @@ mod tests {
         }
     }
 
+    fn line() -> Line {
+        Line::new(Point3::ORIGIN, Point3::new(3.0, 4.0, 0.0))
+    }
+
+    fn circle() -> Circle {
+        Circle::new(Plane::WORLD_XY, 2.0).unwrap()
+    }
+
+    fn arc() -> ArcCurve {
+        ArcCurve::new(circle(), Interval::new(0.0, 1.0)).unwrap()
+    }
+
     /// Values of each type, including ones that cast to every type reachable from it.
     fn samples(t: DataType) -> Vec<Value> {
         match t {
@@ -334,6 +390,23 @@ mod tests {
             DataType::Plane => vec![Value::Plane(Plane::WORLD_YZ)],
             DataType::Domain => vec![Value::Domain(Interval::new(1.0, 4.0))],
             DataType::Transform => vec![Value::Transform(Transform::IDENTITY)],
+            DataType::Box => vec![Value::Box(OrientedBox::new(
+                Plane::WORLD_XY,
+                Interval::UNIT,
+                Interval::UNIT,
+                Interval::new(0.0, 2.0),
+            ))],
+            DataType::Line => vec![Value::Line(line())],
+            DataType::Circle => vec![Value::Circle(circle())],
+            DataType::Arc => vec![Value::Arc(arc())],
+            DataType::Curve => vec![
+                Value::Curve(Shared::new(Curve::from(line()))),
+                Value::Curve(Shared::new(Curve::from(circle()))),
+                Value::Curve(Shared::new(Curve::from(arc()))),
+            ],
+            DataType::Surface => vec![Value::Surface(Shared::new(
+                NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
+            ))],
             DataType::Generic => Vec::new(),
         }
     }

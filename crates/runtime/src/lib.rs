@@ -5,6 +5,7 @@
 
 mod call;
 mod cast;
+mod cast_geometry;
 mod cast_rules;
 mod collect;
 mod evaluator;
