@@ -1,1 +1,36 @@
-//! The node library of locus.
+//! The node library of locus: Grasshopper's components, by category.
+//!
+//! Node types are registered explicitly: `locus_nodes::register(&mut registry)` adds every
+//! node type of the library, and each category module has its own `register`. Node ids are
+//! `category.snake_name` (`maths.addition`), defined once as constants next to each node.
+//!
+//! # Index
+//!
+//! **Params** ([`params`])
+//! - Primitive ([`params::primitive`]): Number \[Num\], Integer \[Int\], Boolean \[Bool\],
+//!   Text \[Txt\], Domain.
+//!
+//! **Maths** ([`maths`])
+//! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
+//!   \[A+B\], Subtraction \[A-B\], Multiplication \[A×B\], Division \[A/B\], Negative
+//!   \[Neg\], Absolute \[Abs\], Power \[Pow\], Modulus \[Mod\], Larger Than \[Larger\],
+//!   Smaller Than \[Smaller\], Equality \[Equals\], Gate And/Or/Xor/Nand/Nor/Xnor/Not.
+//! - Domain ([`maths::domain`]): Construct Domain \[Dom\], Deconstruct Domain \[DeDomain\],
+//!   Remap Numbers \[ReMap\].
+//! - Script ([`maths::script`]): Expression, Evaluate \[Eval\]; the formula language is
+//!   [`expression`].
+//!
+//! **Sets**
+//! - Sequence ([`maths::sequence`]): Range, Series.
+
+pub mod expression;
+pub mod maths;
+pub mod params;
+
+use locus_runtime::NodeRegistry;
+
+/// Registers every node type of the library.
+pub fn register(registry: &mut NodeRegistry) {
+    params::register(registry);
+    maths::register(registry);
+}

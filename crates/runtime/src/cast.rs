@@ -9,9 +9,9 @@
 //!
 //! The value-level table is the `cast_table!` invocation below: one line per pair, naming a
 //! typed function `fn(&A) -> Option<B>`. The same line generates the per-value dispatch and
-//! the branch-level loop over a typed column, so the two cannot disagree. Casts of kernel
-//! geometry types (geometry → bounding box, line → curve, curve → number as length, box →
-//! B-rep …) are added there as those types join [`Value`].
+//! the branch-level loop over a typed column, so the two cannot disagree. The conversions
+//! themselves live in `cast_rules.rs` (numbers, text, points) and `cast_geometry.rs`
+//! (bounding boxes and other geometry).
 
 use std::borrow::Cow;
 use std::fmt;
@@ -22,16 +22,15 @@ use locus_kernel::{
 };
 
 use crate::cast_geometry::{
-    arc_to_box, circle_plane, circle_to_box, curve_length, curve_to_arc, curve_to_box,
-    curve_to_circle, curve_to_line, line_to_box, point_to_box, surface_to_box,
+    arc_to_box, circle_plane, circle_to_box, curve_to_arc, curve_to_box, curve_to_circle,
+    curve_to_line, line_to_box, point_to_box, surface_to_box,
 };
 use crate::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
     text_to_boolean, text_to_domain, text_to_integer,
 };
 use crate::value_text::{
-    format_arc, format_boolean, format_box, format_circle, format_curve, format_domain,
-    format_line, format_number, format_plane, format_point, format_surface, format_transform,
+    format_boolean, format_domain, format_number, format_plane, format_point, format_transform,
     format_value, format_vector, parse_number, write_quoted,
 };
 use crate::{Branch, DataTree, DataType, Item, Shared, TreePath, Value};
@@ -329,39 +328,29 @@ cast_table! {
     Curve(Shared<Curve>) => Line(Line) = curve_to_line;
     Curve(Shared<Curve>) => Circle(Circle) = curve_to_circle;
     Curve(Shared<Curve>) => Arc(ArcCurve) = curve_to_arc;
-    Line(Line) => Number(f64) = |l: &Line| Some(l.length()).filter(|x| x.is_finite());
-    Circle(Circle) => Number(f64) = |c: &Circle| Some(c.circumference()).filter(|x| x.is_finite());
-    Arc(ArcCurve) => Number(f64) = |a: &ArcCurve| Some(a.length()).filter(|x| x.is_finite());
-    Curve(Shared<Curve>) => Number(f64) = curve_length;
+    Line(Line) => Number(f64) = |l: &Line| Some(l.length());
+    Circle(Circle) => Number(f64) = |c: &Circle| Some(c.circumference());
+    Arc(ArcCurve) => Number(f64) = |a: &ArcCurve| Some(a.length());
+    Curve(Shared<Curve>) => Number(f64) = |c: &Shared<Curve>| Some(c.length());
     Curve(Shared<Curve>) => Domain(Interval) = |c: &Shared<Curve>| Some(c.domain());
     Circle(Circle) => Plane(Plane) = circle_plane;
     Arc(ArcCurve) => Plane(Plane) = |a: &ArcCurve| circle_plane(&a.circle);
     Box(OrientedBox) => Plane(Plane) = |b: &OrientedBox| Some(b.plane);
     Line(Line) => Vector(Vector3) = |l: &Line| Some(l.direction());
-    Box(OrientedBox) => Text(String) = |b: &OrientedBox| Some(format_box(b));
-    Line(Line) => Text(String) = |l: &Line| Some(format_line(l));
-    Circle(Circle) => Text(String) = |c: &Circle| Some(format_circle(c));
-    Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_arc(a));
-    Curve(Shared<Curve>) => Text(String) = |c: &Shared<Curve>| Some(format_curve(c));
+    Box(OrientedBox) => Text(String) = |b: &OrientedBox| Some(format_value(&Value::Box(*b)));
+    Line(Line) => Text(String) = |l: &Line| Some(format_value(&Value::Line(*l)));
+    Circle(Circle) => Text(String) = |c: &Circle| Some(format_value(&Value::Circle(*c)));
+    Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_value(&Value::Arc(*a)));
+    Curve(Shared<Curve>) => Text(String) =
+        |c: &Shared<Curve>| Some(format_value(&Value::Curve(c.clone())));
     Surface(Shared<NurbsSurface>) => Text(String) =
-        |s: &Shared<NurbsSurface>| Some(format_surface(s));
+        |s: &Shared<NurbsSurface>| Some(format_value(&Value::Surface(s.clone())));
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use locus_kernel::Transform;
-
-    fn text(s: &str) -> Value {
-        Value::Text(s.to_owned())
-    }
-
-    fn err(v: Value, to: DataType) -> String {
-        match cast_value(&v, to) {
-            Ok(c) => panic!("{v:?} cast to {c:?}"),
-            Err(e) => e.to_string(),
-        }
-    }
 
     fn line() -> Line {
         Line::new(Point3::ORIGIN, Point3::new(3.0, 4.0, 0.0))
@@ -373,6 +362,17 @@ mod tests {
 
     fn arc() -> ArcCurve {
         ArcCurve::new(circle(), Interval::new(0.0, 1.0)).unwrap()
+    }
+
+    fn text(s: &str) -> Value {
+        Value::Text(s.to_owned())
+    }
+
+    fn err(v: Value, to: DataType) -> String {
+        match cast_value(&v, to) {
+            Ok(c) => panic!("{v:?} cast to {c:?}"),
+            Err(e) => e.to_string(),
+        }
     }
 
     /// Values of each type, including ones that cast to every type reachable from it.

@@ -125,12 +125,6 @@ pub(crate) fn curve_to_arc(curve: &Shared<Curve>) -> Option<Arc> {
     }
 }
 
-/// A curve's length (NURBS to the kernel's length tolerance); non-finite lengths fail.
-pub(crate) fn curve_length(curve: &Shared<Curve>) -> Option<f64> {
-    let length = curve.length();
-    length.is_finite().then_some(length)
-}
-
 /// The plane of a circle or arc (the circle's own plane, origin at the centre).
 pub(crate) fn circle_plane(circle: &Circle) -> Option<Plane> {
     circle.plane.is_finite().then_some(circle.plane)
@@ -248,6 +242,5 @@ mod tests {
         assert_eq!(curve_to_line(&curve), Some(line));
         assert_eq!(curve_to_circle(&curve), None);
         assert_eq!(curve_to_arc(&curve), None);
-        assert_eq!(curve_length(&curve), Some(5.0));
     }
 }

@@ -14,7 +14,7 @@ use std::fmt;
 
 use locus_kernel::{Interval, Point3, Vector3};
 
-use crate::value_text::{format_value, parse_number, write_number, write_quoted};
+use crate::value_text::{format_plane, format_transform, parse_number, write_number, write_quoted};
 use crate::{Branch, DataTree, DataType, TreePath, Value};
 
 /// Why a tree could not be read from text: the column (in characters, from 1) and the problem.
@@ -31,8 +31,8 @@ impl DataTree {
     /// The tree in one-line Grasshopper notation, such as `{0;0}:[1, 2, 3] {0;1}:[4]`.
     ///
     /// Items of any type are printed; trees of numbers, integers, booleans, text, points,
-    /// vectors and domains read back with [`DataTree::parse_text`] given their type. Planes,
-    /// transforms and geometry are printed for reading only.
+    /// vectors and domains read back with [`DataTree::parse_text`] given their type. Planes and
+    /// transforms are printed for reading only.
     pub fn to_text(&self) -> String {
         let mut out = String::new();
         for (b, (path, branch)) in self.branches().iter().enumerate() {
@@ -95,14 +95,9 @@ fn write_item(out: &mut String, value: &Value) {
             out.push_str(" To ");
             write_number(out, d.t1);
         }
-        other @ (Value::Plane(_)
-        | Value::Transform(_)
-        | Value::Box(_)
-        | Value::Line(_)
-        | Value::Circle(_)
-        | Value::Arc(_)
-        | Value::Curve(_)
-        | Value::Surface(_)) => out.push_str(&format_value(other)),
+        Value::Plane(p) => out.push_str(&format_plane(p)),
+        Value::Transform(t) => out.push_str(&format_transform(t)),
+        other => write_quoted(out, &crate::value_text::format_value(other)),
     }
 }
 

@@ -8,10 +8,7 @@
 
 use std::fmt::Write;
 
-use locus_kernel::{
-    Arc, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3, Transform,
-    Vector3,
-};
+use locus_kernel::{Interval, Plane, Point3, Transform, Vector3};
 
 use crate::Value;
 
@@ -144,76 +141,6 @@ pub fn format_transform(t: &Transform) -> String {
     s
 }
 
-/// A box as text: its plane and its three extents.
-pub fn format_box(b: &OrientedBox) -> String {
-    format!(
-        "Box(origin {}, normal {}, x {}, y {}, z {})",
-        format_point(b.plane.origin),
-        format_vector(b.plane.z_axis),
-        format_domain(b.x),
-        format_domain(b.y),
-        format_domain(b.z)
-    )
-}
-
-/// A line as text: `Line({0, 0, 0}, {1, 0, 0})`.
-pub fn format_line(line: &Line) -> String {
-    format!(
-        "Line({}, {})",
-        format_point(line.from),
-        format_point(line.to)
-    )
-}
-
-/// A circle as text: centre, normal and radius.
-pub fn format_circle(circle: &Circle) -> String {
-    let mut s = format!(
-        "Circle(center {}, normal {}, radius ",
-        format_point(circle.center()),
-        format_vector(circle.normal())
-    );
-    write_number(&mut s, circle.radius);
-    s.push(')');
-    s
-}
-
-/// An arc as text: centre, normal, radius and angles.
-pub fn format_arc(arc: &Arc) -> String {
-    let mut s = format!(
-        "Arc(center {}, normal {}, radius ",
-        format_point(arc.circle.center()),
-        format_vector(arc.circle.normal())
-    );
-    write_number(&mut s, arc.circle.radius);
-    let _ = write!(s, ", angle {})", format_domain(arc.angle));
-    s
-}
-
-/// A curve as text: its kind and domain, such as `Curve(NURBS degree 3, domain 0 To 1)`.
-pub fn format_curve(curve: &Curve) -> String {
-    let kind = match curve {
-        Curve::Line { .. } => "line".to_owned(),
-        Curve::Polyline { polyline, .. } => {
-            format!("polyline of {} points", polyline.points().len())
-        }
-        Curve::Circle { .. } => "circle".to_owned(),
-        Curve::Arc { .. } => "arc".to_owned(),
-        Curve::Nurbs(n) => format!("NURBS degree {}", n.degree()),
-    };
-    format!("Curve({kind}, domain {})", format_domain(curve.domain()))
-}
-
-/// A surface as text: its degrees and domains.
-pub fn format_surface(surface: &NurbsSurface) -> String {
-    format!(
-        "Surface(NURBS degree {}×{}, domain {} × {})",
-        surface.degree_u(),
-        surface.degree_v(),
-        format_domain(surface.domain_u()),
-        format_domain(surface.domain_v())
-    )
-}
-
 /// A boolean as .NET prints it: `True` or `False`.
 pub fn format_boolean(b: bool) -> &'static str {
     if b { "True" } else { "False" }
@@ -231,12 +158,52 @@ pub fn format_value(value: &Value) -> String {
         Value::Plane(p) => format_plane(p),
         Value::Domain(d) => format_domain(*d),
         Value::Transform(t) => format_transform(t),
-        Value::Box(b) => format_box(b),
-        Value::Line(l) => format_line(l),
-        Value::Circle(c) => format_circle(c),
-        Value::Arc(a) => format_arc(a),
-        Value::Curve(c) => format_curve(c),
-        Value::Surface(s) => format_surface(s),
+        Value::Box(b) => format!(
+            "Box (O:{} sizes {} × {} × {})",
+            format_point(b.plane.origin),
+            format_number(b.x.length().abs()),
+            format_number(b.y.length().abs()),
+            format_number(b.z.length().abs())
+        ),
+        Value::Line(l) => format!("Line ({} to {})", format_point(l.from), format_point(l.to)),
+        Value::Circle(c) => format!(
+            "Circle (R:{} at {})",
+            format_number(c.radius),
+            format_point(c.plane.origin)
+        ),
+        Value::Arc(a) => format!(
+            "Arc (R:{} at {}, angle {})",
+            format_number(a.circle.radius),
+            format_point(a.circle.plane.origin),
+            format_domain(a.angle)
+        ),
+        Value::Curve(c) => {
+            let d = c.domain();
+            format!(
+                "{} (degree {}, domain {})",
+                curve_kind(c),
+                c.degree(),
+                format_domain(Interval::new(d.t0, d.t1))
+            )
+        }
+        Value::Surface(s) => format!(
+            "NURBS Surface (degree {}×{}, {}×{} points)",
+            s.degree_u(),
+            s.degree_v(),
+            s.count_u(),
+            s.count_v()
+        ),
+    }
+}
+
+/// The kind of a curve as Rhino names it.
+pub fn curve_kind(c: &locus_kernel::Curve) -> &'static str {
+    use locus_kernel::Curve;
+    match c {
+        Curve::Line { .. } => "Line Curve",
+        Curve::Polyline { .. } => "Polyline Curve",
+        Curve::Circle { .. } | Curve::Arc { .. } => "Arc Curve",
+        Curve::Nurbs(_) => "NURBS Curve",
     }
 }
 
@@ -335,28 +302,43 @@ mod tests {
     }
 
     #[test]
-    fn geometry_prints_a_description() {
+    fn geometry_values_print_a_description() {
+        use locus_kernel::{Arc, Circle, Curve, Line, NurbsSurface, OrientedBox};
+
+        use crate::Shared;
+
         let line = Line::new(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0));
-        assert_eq!(format_line(&line), "Line({0, 0, 0}, {1, 0, 0})");
         let circle = Circle::new(Plane::WORLD_XY, 2.5).unwrap();
-        assert_eq!(
-            format_circle(&circle),
-            "Circle(center {0, 0, 0}, normal {0, 0, 1}, radius 2.5)"
-        );
-        assert_eq!(
-            format_curve(&Curve::from(line)),
-            "Curve(line, domain 0 To 1)"
-        );
-        let b = OrientedBox::new(
+        let unit = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
+        let arc = Arc::new(unit, Interval::new(0.0, std::f64::consts::FRAC_PI_2)).unwrap();
+        let bx = OrientedBox::new(
             Plane::WORLD_XY,
             Interval::UNIT,
             Interval::UNIT,
             Interval::new(0.0, 2.0),
         );
-        assert_eq!(
-            format_box(&b),
-            "Box(origin {0, 0, 0}, normal {0, 0, 1}, x 0 To 1, y 0 To 1, z 0 To 2)"
-        );
+        let surface =
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap();
+        let cases = [
+            (Value::Box(bx), "Box (O:{0, 0, 0} sizes 1 × 1 × 2)"),
+            (Value::Line(line), "Line ({0, 0, 0} to {1, 0, 0})"),
+            (Value::Circle(circle), "Circle (R:2.5 at {0, 0, 0})"),
+            (
+                Value::Arc(arc),
+                "Arc (R:1 at {0, 0, 0}, angle 0 To 1.5707963267948966)",
+            ),
+            (
+                Value::Curve(Shared::new(Curve::from(line))),
+                "Line Curve (degree 1, domain 0 To 1)",
+            ),
+            (
+                Value::Surface(Shared::new(surface)),
+                "NURBS Surface (degree 1×1, 2×2 points)",
+            ),
+        ];
+        for (value, text) in cases {
+            assert_eq!(format_value(&value), text);
+        }
     }
 
     #[test]
