@@ -5,6 +5,7 @@
 
 mod call;
 mod cast;
+mod cast_geometry;
 mod cast_rules;
 mod check;
 mod collect;
