@@ -282,6 +282,27 @@ mod tests {
     }
 
     #[test]
+    fn scale_nu_bad_input() {
+        let r = NodeCall::new(&scale_nu())
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .skip_input()
+            .skip_input()
+            .input(DataTree::from_item(f64::INFINITY))
+            .run();
+        assert_error(&r, "not finite");
+        assert!(is_null(&r, 0) && is_null(&r, 1));
+        // A zero factor flattens a box into a flat box, and a circle in that plane into a
+        // degenerate curve, but a plane whose y axis collapses is an error.
+        let r = NodeCall::new(&scale_nu())
+            .input(DataTree::from_item(Plane::WORLD_XY))
+            .skip_input()
+            .skip_input()
+            .input(DataTree::from_item(0.0))
+            .run();
+        assert_error(&r, "degenerate");
+    }
+
+    #[test]
     fn scale_nu_in_a_tilted_plane_fixes_its_origin() {
         let plane =
             Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, 1.0, 1.0)).unwrap();

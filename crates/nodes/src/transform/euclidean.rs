@@ -443,6 +443,24 @@ mod tests {
     }
 
     #[test]
+    fn mirror_and_orient_with_a_nan_plane() {
+        let nan = Plane::WORLD_XY.translated(Vector3::new(0.0, f64::NAN, 0.0));
+        let r = NodeCall::new(&mirror())
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .input(DataTree::from_item(nan))
+            .run();
+        assert_error(&r, "not finite");
+        assert!(is_null(&r, 0) && is_null(&r, 1));
+        let r = NodeCall::new(&orient())
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .skip_input()
+            .input(DataTree::from_item(nan))
+            .run();
+        assert_error(&r, "not finite");
+        assert!(is_null(&r, 0) && is_null(&r, 1));
+    }
+
+    #[test]
     fn orient_keeps_plane_coordinates() {
         let from = Plane::WORLD_XY;
         let to = Plane::from_points(

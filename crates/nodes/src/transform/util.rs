@@ -135,6 +135,9 @@ pub fn deconstruct_transform() -> NodeType {
         )
         .solve(|s| {
             let t = *s.item::<Transform>(0)?;
+            if !t.is_finite() {
+                s.warning("the transform has an entry that is not finite");
+            }
             let values: Vec<f64> = t.to_rows().into_iter().flatten().collect();
             s.set_list(0, values);
             Ok(())
@@ -272,6 +275,21 @@ mod tests {
     }
 
     #[test]
+    fn compound_of_a_nan_transform_is_an_error() {
+        let nan = Transform::translation(Vector3::new(f64::NAN, 0.0, 0.0));
+        let r = NodeCall::new(&compound())
+            .input(DataTree::from_list(vec![Transform::IDENTITY, nan]))
+            .run();
+        assert_error(&r, "not finite");
+        assert!(is_null(&r, 0));
+        // An empty list has nothing to compound: no iteration runs.
+        let r = NodeCall::new(&compound())
+            .input(DataTree::from_list(Vec::<Transform>::new()))
+            .run();
+        assert!(r.outputs[0].values().all(|v| v.is_none()));
+    }
+
+    #[test]
     fn compound_skips_nulls() {
         let mut b = locus_runtime::Branch::new(DataType::Transform);
         b.push(Transform::translation(Vector3::X));
@@ -331,6 +349,17 @@ mod tests {
             .run();
         assert_clean(&back);
         assert_eq!(only::<Transform>(&back, 0), t);
+    }
+
+    #[test]
+    fn deconstruct_a_nan_transform_warns() {
+        let t = Transform::translation(Vector3::new(f64::NAN, 0.0, 0.0));
+        let r = NodeCall::new(&deconstruct_transform())
+            .input(DataTree::from_item(t))
+            .run();
+        assert_eq!(r.messages.len(), 1);
+        assert_eq!(r.messages[0].level, locus_runtime::Level::Warning);
+        assert!(items::<f64>(&r.outputs[0])[3].is_some_and(f64::is_nan));
     }
 
     #[test]

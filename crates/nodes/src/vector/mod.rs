@@ -17,7 +17,7 @@ pub mod pull;
 pub mod vectors;
 
 use locus_kernel::{Point3, Vector3};
-use locus_runtime::{NodeError, NodeRegistry};
+use locus_runtime::{NodeError, NodeRegistry, Solve};
 
 /// Registers every Vector node type.
 pub fn register(registry: &mut NodeRegistry) {
@@ -56,6 +56,16 @@ pub(crate) fn finite_vector(v: Vector3, what: &str) -> Result<Vector3, NodeError
         Err(NodeError(format!(
             "{what} has a component that is not finite"
         )))
+    }
+}
+
+/// Warns, for nodes that take geometry apart, that `what` has a NaN or infinite coordinate:
+/// the numbers are still written (as NaN or infinity) so that lists stay aligned.
+pub(crate) fn warn_unless_finite(s: &mut Solve<'_>, finite: bool, what: &str) {
+    if !finite {
+        s.warning(format!(
+            "{what} has a coordinate that is not finite; its numbers are not finite either"
+        ));
     }
 }
 

@@ -8,7 +8,7 @@
 use locus_kernel::{Plane, Point3, Vector3};
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 
-use super::{finite_point, finite_vector};
+use super::{finite_point, finite_vector, warn_unless_finite};
 
 /// Id of [`construct_plane`].
 pub const CONSTRUCT_PLANE: &str = "vector.construct_plane";
@@ -201,7 +201,10 @@ pub fn xz_plane() -> NodeType {
 /// Deconstruct Plane \[DePlane\]: the origin and axes of a plane.
 pub fn deconstruct_plane() -> NodeType {
     plane_node(DECONSTRUCT_PLANE, "Deconstruct Plane", "DePlane")
-        .description("Splits a plane into its origin and its three unit axes.")
+        .description(
+            "Splits a plane into its origin and its three unit axes. A plane with a NaN or \
+             infinite coordinate is passed on with a warning.",
+        )
         .input(Port::new("Plane", "P", DataType::Plane).doc("The plane to deconstruct."))
         .output(Port::new("Origin", "O", DataType::Point).doc("The origin of the plane."))
         .output(Port::new("X-Axis", "X", DataType::Vector).doc("The unit x axis."))
@@ -209,6 +212,7 @@ pub fn deconstruct_plane() -> NodeType {
         .output(Port::new("Z-Axis", "Z", DataType::Vector).doc("The unit normal, x × y."))
         .solve(|s| {
             let p = *s.item::<Plane>(0)?;
+            warn_unless_finite(s, p.is_finite(), "plane P");
             s.set(0, p.origin);
             s.set(1, p.x_axis);
             s.set(2, p.y_axis);
@@ -245,6 +249,7 @@ pub fn plane_coefficients() -> NodeType {
         ))
         .solve(|s| {
             let p = *s.item::<Plane>(0)?;
+            warn_unless_finite(s, p.is_finite(), "plane P");
             let [a, b, c, d] = p.equation();
             s.set(0, a);
             s.set(1, b);
@@ -293,10 +298,10 @@ pub fn plane_closest_point() -> NodeType {
 
 #[cfg(test)]
 mod tests {
-    use locus_runtime::{DataTree, NodeCall};
+    use locus_runtime::{DataTree, Level, NodeCall};
 
     use super::*;
-    use crate::vector::test_support::{assert_clean, assert_error, is_null, only};
+    use crate::vector::test_support::{assert_clean, assert_error, is_null, messages, only};
 
     fn v(x: f64, y: f64, z: f64) -> Vector3 {
         Vector3::new(x, y, z)
@@ -433,6 +438,16 @@ mod tests {
         assert_eq!(only::<Vector3>(&r, 1), plane.x_axis);
         assert_eq!(only::<Vector3>(&r, 2), plane.y_axis);
         assert_eq!(only::<Vector3>(&r, 3), plane.z_axis);
+    }
+
+    #[test]
+    fn taking_apart_a_nan_plane_warns() {
+        let nan = Plane::WORLD_XY.translated(v(f64::NAN, 0.0, 0.0));
+        for node in [deconstruct_plane(), plane_coefficients()] {
+            let r = NodeCall::new(&node).input(DataTree::from_item(nan)).run();
+            assert_eq!(messages(&r, Level::Warning).len(), 1, "{}", node.name);
+            assert!(messages(&r, Level::Error).is_empty());
+        }
     }
 
     #[test]

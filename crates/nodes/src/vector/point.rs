@@ -4,7 +4,7 @@
 use locus_kernel::Point3;
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 
-use super::{finite_number, finite_point};
+use super::{finite_number, finite_point, warn_unless_finite};
 
 /// Id of [`construct_point`].
 pub const CONSTRUCT_POINT: &str = "vector.construct_point";
@@ -66,7 +66,10 @@ pub fn construct_point() -> NodeType {
 /// Deconstruct \[pDecon\]: the coordinates of a point.
 pub fn deconstruct_point() -> NodeType {
     point_node(DECONSTRUCT_POINT, "Deconstruct", "pDecon")
-        .description("Splits a point into its x, y and z coordinates in the world system.")
+        .description(
+            "Splits a point into its x, y and z coordinates in the world system. A NaN or \
+             infinite coordinate is passed on with a warning.",
+        )
         .input(Port::new("Point", "P", DataType::Point).doc("The point to deconstruct."))
         .output(
             Port::new("X component", "X", DataType::Number)
@@ -82,6 +85,7 @@ pub fn deconstruct_point() -> NodeType {
         )
         .solve(|s| {
             let p = *s.item::<Point3>(0)?;
+            warn_unless_finite(s, p.is_finite(), "point P");
             s.set(0, p.x);
             s.set(1, p.y);
             s.set(2, p.z);
@@ -141,10 +145,10 @@ pub fn point_between() -> NodeType {
 
 #[cfg(test)]
 mod tests {
-    use locus_runtime::{DataTree, NodeCall};
+    use locus_runtime::{DataTree, Level, NodeCall};
 
     use super::*;
-    use crate::vector::test_support::{assert_clean, assert_error, is_null, items, only};
+    use crate::vector::test_support::{assert_clean, assert_error, is_null, items, messages, only};
 
     #[test]
     fn construct_point_with_defaults() {
@@ -198,6 +202,19 @@ mod tests {
         assert_eq!(only::<f64>(&r, 0), 2.0);
         assert_eq!(only::<f64>(&r, 1), 3.0);
         assert_eq!(only::<f64>(&r, 2), 1.0);
+    }
+
+    #[test]
+    fn deconstruct_point_passes_nan_on_with_a_warning() {
+        let r = NodeCall::new(&deconstruct_point())
+            .input(DataTree::from_item(Point3::new(1.0, f64::NAN, 3.0)))
+            .run();
+        assert_eq!(
+            messages(&r, Level::Warning),
+            vec!["point P has a coordinate that is not finite; its numbers are not finite either"]
+        );
+        assert_eq!(only::<f64>(&r, 0), 1.0);
+        assert!(only::<f64>(&r, 1).is_nan());
     }
 
     #[test]

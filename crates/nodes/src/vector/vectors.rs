@@ -7,7 +7,7 @@ use std::f64::consts::FRAC_PI_2;
 use locus_kernel::{Point3, Vector3};
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 
-use super::{finite_number, finite_point, finite_vector, unit};
+use super::{finite_number, finite_point, finite_vector, unit, warn_unless_finite};
 
 /// Id of [`vector_xyz`].
 pub const VECTOR_XYZ: &str = "vector.vector_xyz";
@@ -96,13 +96,17 @@ pub fn vector_xyz() -> NodeType {
 /// Deconstruct Vector \[DeVec\]: the components of a vector.
 pub fn deconstruct_vector() -> NodeType {
     vector_node(DECONSTRUCT_VECTOR, "Deconstruct Vector", "DeVec")
-        .description("Splits a vector into its x, y and z components.")
+        .description(
+            "Splits a vector into its x, y and z components. A NaN or infinite component is \
+             passed on with a warning.",
+        )
         .input(Port::new("Vector", "V", DataType::Vector).doc("The vector to deconstruct."))
         .output(Port::new("X component", "X", DataType::Number).doc("The x component."))
         .output(Port::new("Y component", "Y", DataType::Number).doc("The y component."))
         .output(Port::new("Z component", "Z", DataType::Number).doc("The z component."))
         .solve(|s| {
             let v = *s.item::<Vector3>(0)?;
+            warn_unless_finite(s, v.is_finite(), "vector V");
             s.set(0, v.x);
             s.set(1, v.y);
             s.set(2, v.z);
@@ -256,7 +260,7 @@ pub fn reverse() -> NodeType {
         .input(Port::new("Vector", "V", DataType::Vector).doc("The vector to reverse."))
         .output(Port::new("Vector", "V", DataType::Vector).doc("The reversed vector, −V."))
         .solve(|s| {
-            let v = *s.item::<Vector3>(0)?;
+            let v = finite_vector(*s.item::<Vector3>(0)?, "vector V")?;
             s.set(0, -v);
             Ok(())
         })
@@ -293,10 +297,10 @@ pub fn rotate() -> NodeType {
 
 #[cfg(test)]
 mod tests {
-    use locus_runtime::{DataTree, NodeCall};
+    use locus_runtime::{DataTree, Level, NodeCall};
 
     use super::*;
-    use crate::vector::test_support::{assert_clean, assert_error, is_null, only};
+    use crate::vector::test_support::{assert_clean, assert_error, is_null, messages, only};
 
     fn v(x: f64, y: f64, z: f64) -> Vector3 {
         Vector3::new(x, y, z)
@@ -333,6 +337,16 @@ mod tests {
             [only::<f64>(&r, 0), only::<f64>(&r, 1), only::<f64>(&r, 2)],
             [-1.0, 2.5, 7.0]
         );
+    }
+
+    #[test]
+    fn deconstruct_vector_passes_infinity_on_with_a_warning() {
+        let r = NodeCall::new(&deconstruct_vector())
+            .input(DataTree::from_item(v(f64::INFINITY, 2.0, 0.0)))
+            .run();
+        assert_eq!(messages(&r, Level::Warning).len(), 1);
+        assert_eq!(only::<f64>(&r, 0), f64::INFINITY);
+        assert_eq!(only::<f64>(&r, 1), 2.0);
     }
 
     #[test]
@@ -398,6 +412,12 @@ mod tests {
         assert_error(&r, "zero length");
         assert!(is_null(&r, 0));
         assert_eq!(only::<f64>(&r, 1), 0.0);
+        let r = NodeCall::new(&vector_2pt())
+            .input(DataTree::from_item(Point3::new(f64::NAN, 0.0, 0.0)))
+            .input(DataTree::from_item(p))
+            .run();
+        assert_error(&r, "point A");
+        assert!(is_null(&r, 0) && is_null(&r, 1));
     }
 
     #[test]
@@ -473,6 +493,11 @@ mod tests {
             .input(DataTree::from_item(v(1.0, -2.0, 0.0)))
             .run();
         assert_eq!(only::<Vector3>(&r, 0), v(-1.0, 2.0, -0.0));
+        let r = NodeCall::new(&reverse())
+            .input(DataTree::from_item(v(f64::NAN, 0.0, 0.0)))
+            .run();
+        assert_error(&r, "vector V");
+        assert!(is_null(&r, 0));
     }
 
     #[test]
