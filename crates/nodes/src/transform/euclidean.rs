@@ -347,6 +347,21 @@ mod tests {
     }
 
     #[test]
+    fn rotate_about_a_point_cast_to_a_plane() {
+        // A point given for the plane is cast to the XY plane through it.
+        let r = NodeCall::new(&rotate())
+            .input(DataTree::from_item(Point3::new(2.0, 1.0, 7.0)))
+            .input(DataTree::from_item(PI))
+            .input(DataTree::from_item(Point3::new(1.0, 1.0, 0.0)))
+            .run();
+        assert_clean(&r);
+        let Value::Point(p) = only_value(&r, 0) else {
+            panic!("expected a point");
+        };
+        assert!(p.abs_diff_eq(Point3::new(0.0, 1.0, 7.0), 1e-15));
+    }
+
+    #[test]
     fn rotate_nan_angle_is_an_error() {
         let r = NodeCall::new(&rotate())
             .input(DataTree::from_item(Point3::ORIGIN))
