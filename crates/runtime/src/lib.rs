@@ -6,10 +6,16 @@
 mod call;
 mod cast;
 mod cast_rules;
+mod check;
 mod collect;
+mod compare;
+mod diagnostic;
+mod dot;
 mod evaluator;
+mod format;
 mod graph;
 mod iterate;
+mod literal;
 mod message;
 mod node;
 mod path;
@@ -19,6 +25,7 @@ mod plan;
 mod registry;
 mod simplify;
 mod solve;
+mod syntax;
 mod tree;
 mod tree_ops;
 mod tree_text;
@@ -28,11 +35,17 @@ mod value_text;
 pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value};
 pub use crate::cast_rules::number_to_integer;
+pub use crate::check::{Checked, check, check_text};
+pub use crate::compare::{COMPARE_TOLERANCE, compare_trees, values_agree};
+pub use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+pub use crate::dot::to_dot;
 pub use crate::evaluator::{EvalError, Evaluator};
+pub use crate::format::{Document, write_graph};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,
 };
+pub use crate::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal};
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,

@@ -33,10 +33,10 @@ fn container(id: &str, name: &str, nickname: &str, data_type: DataType, what: &s
         .input(
             Port::new(name, nickname, data_type)
                 .doc(&format!(
-                    "The {what} to hold (a list per branch); an empty container is not an error."
+                    "The {what} to hold, given in the graph or wired in (a list per branch). No \
+                     default; a container without data warns that it failed to collect data."
                 ))
-                .list()
-                .optional(),
+                .list(),
         )
         .output(
             Port::new(name, nickname, data_type)
@@ -70,10 +70,10 @@ pub fn plane() -> NodeType {
 #[cfg(test)]
 mod tests {
     use locus_kernel::{Plane, Point3, Vector3};
-    use locus_runtime::{Branch, DataTree, NodeCall, TreePath};
+    use locus_runtime::{Branch, DataTree, Level, NodeCall, TreePath, Value};
 
     use super::*;
-    use crate::vector::test_support::{assert_clean, items};
+    use crate::vector::test_support::{assert_clean, items, messages};
 
     #[test]
     fn containers_pass_branches_through() {
@@ -112,10 +112,43 @@ mod tests {
     }
 
     #[test]
-    fn an_empty_container_outputs_nothing() {
+    fn an_empty_container_warns_and_outputs_nothing() {
         let r = NodeCall::new(&point()).run();
-        assert_clean(&r);
+        assert_eq!(messages(&r, Level::Warning).len(), 1, "{:?}", r.messages);
+        assert!(messages(&r, Level::Error).is_empty());
         assert_eq!(r.outputs[0].item_count(), 0);
+    }
+
+    #[test]
+    fn containers_cast_what_flows_in() {
+        // Points into a Vector container become position vectors; text is parsed; what
+        // cannot be cast becomes a null with an error.
+        let mut b = Branch::new(DataType::Generic);
+        b.push_value(Value::Point(Point3::new(1.0, 2.0, 3.0)));
+        b.push_value(Value::Text("4, 5, 6".into()));
+        b.push_value(Value::Number(1.0));
+        let mut tree = DataTree::new();
+        tree.insert(TreePath::zero(), b);
+        let r = NodeCall::new(&vector()).input(tree).run();
+        assert_eq!(
+            items::<Vector3>(&r.outputs[0]),
+            vec![
+                Some(Vector3::new(1.0, 2.0, 3.0)),
+                Some(Vector3::new(4.0, 5.0, 6.0)),
+                None
+            ]
+        );
+        assert_eq!(messages(&r, Level::Error).len(), 1, "{:?}", r.messages);
+        // A point into a Plane container is the XY plane through it.
+        let r = NodeCall::new(&plane())
+            .input(DataTree::from_item(Point3::new(1.0, 2.0, 3.0)))
+            .run();
+        assert_eq!(
+            items::<Plane>(&r.outputs[0]),
+            vec![Some(
+                Plane::WORLD_XY.translated(Vector3::new(1.0, 2.0, 3.0))
+            )]
+        );
     }
 
     #[test]

@@ -117,10 +117,11 @@ pub fn shear() -> NodeType {
                 .doc("The base plane, which stays fixed. Default the world XY plane.")
                 .default_value(Plane::WORLD_XY),
         )
-        .input(
-            Port::new("Grip", "G", DataType::Point)
-                .doc("The reference point, off the base plane, that is moved to the target."),
-        )
+        .input(Port::new("Grip", "Gr", DataType::Point).doc(
+            "The reference point, off the base plane, that is moved to the target. \
+                 (Grasshopper's nickname is G, as the geometry's; locus needs distinct names, \
+                 so it is Gr here, and `Grip` works too.)",
+        ))
         .input(Port::new("Target", "T", DataType::Point).doc("Where the grip point goes."))
         .output(geometry_output("sheared"))
         .output(transform_output())

@@ -123,8 +123,8 @@ pub fn point_between() -> NodeType {
         .description(
             "Finds the point at parameter t between two points: M = A + t (B − A), the \
              vector equation of the line through A and B. t = 0 gives A, t = 1 gives B and \
-             t = 0.5 the midpoint; values outside 0 to 1 extrapolate beyond the points. (Not \
-             a Grasshopper component: Grasshopper users write this formula in an Expression.)",
+             t = 0.5 the midpoint; values outside 0 to 1 extrapolate beyond the points. Not \
+             a Grasshopper component: Grasshopper users write this formula in an Expression.",
         )
         .input(Port::new("Point A", "A", DataType::Point).doc("The start point (t = 0)."))
         .input(Port::new("Point B", "B", DataType::Point).doc("The end point (t = 1)."))
