@@ -105,11 +105,11 @@ pub fn shear() -> NodeType {
     affine(SHEAR, "Shear", "Shear")
         .description(
             "Shears geometry parallel to a base plane: points on the plane stay, and every \
-             other point moves by the shearing vector T − G scaled by its height above the \
-             plane relative to the grip's, so that the grip G goes exactly to the target T. \
-             In plane coordinates the plane's x and y axes are kept and its z axis goes to \
-             z + (T − G)/h, with h the grip's height. A grip on the base plane cannot be \
-             moved off it and is an error.",
+             other point moves by the shearing vector from the grip Gr to the target T, \
+             scaled by its height above the plane relative to the grip's, so that the grip \
+             goes exactly to the target. In plane coordinates the plane's x and y axes are \
+             kept and its z axis goes to z + (T − Gr)/h, with h the grip's height. A grip on \
+             the base plane cannot be moved off it and is an error.",
         )
         .input(geometry_input("shear"))
         .input(
