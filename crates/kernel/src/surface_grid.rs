@@ -77,19 +77,27 @@ impl NurbsSurface {
                         dst[3] += bw;
                     }
                 }
-                for ((o, basis), &first) in out_row
-                    .iter_mut()
-                    .zip(column_basis.chunks_exact(order_v))
-                    .zip(&column_first)
-                {
-                    let (mut x, mut y, mut z, mut w) = (0.0, 0.0, 0.0, 0.0);
-                    for (h, &b) in row[first..first + order_v].iter().zip(basis) {
-                        x += b * h[0];
-                        y += b * h[1];
-                        z += b * h[2];
-                        w += b * h[3];
+                match order_v {
+                    4 => fill_row_rational::<4>(&row, &column_basis, &column_first, out_row),
+                    3 => fill_row_rational::<3>(&row, &column_basis, &column_first, out_row),
+                    2 => fill_row_rational::<2>(&row, &column_basis, &column_first, out_row),
+                    _ => {
+                        for ((o, basis), &first) in out_row
+                            .iter_mut()
+                            .zip(column_basis.chunks_exact(order_v))
+                            .zip(&column_first)
+                        {
+                            let (mut x, mut y, mut z, mut w) = (0.0, 0.0, 0.0, 0.0);
+                            for (h, &b) in row[first..first + order_v].iter().zip(basis) {
+                                x += b * h[0];
+                                y += b * h[1];
+                                z += b * h[2];
+                                w += b * h[3];
+                            }
+                            let inv = 1.0 / w;
+                            *o = Point3::new(x * inv, y * inv, z * inv);
+                        }
                     }
-                    *o = Point3::new(x / w, y / w, z / w);
                 }
             }
         } else {
@@ -130,6 +138,34 @@ impl NurbsSurface {
             }
         }
         Ok(())
+    }
+}
+
+/// One row of a rational grid (homogeneous row curve) with the `v` order known at compile
+/// time.
+#[inline]
+fn fill_row_rational<const N: usize>(
+    row: &[[f64; 4]],
+    column_basis: &[f64],
+    column_first: &[usize],
+    out: &mut [Point3],
+) {
+    for ((o, basis), &first) in out
+        .iter_mut()
+        .zip(column_basis.chunks_exact(N))
+        .zip(column_first)
+    {
+        let cvs = &row[first..first + N];
+        let basis = &basis[..N];
+        let (mut x, mut y, mut z, mut w) = (0.0, 0.0, 0.0, 0.0);
+        for k in 0..N {
+            x += basis[k] * cvs[k][0];
+            y += basis[k] * cvs[k][1];
+            z += basis[k] * cvs[k][2];
+            w += basis[k] * cvs[k][3];
+        }
+        let inv = 1.0 / w;
+        *o = Point3::new(x * inv, y * inv, z * inv);
     }
 }
 
