@@ -44,6 +44,7 @@ mod nurbs_curve_edit;
 mod nurbs_surface;
 mod nurbs_surface_edit;
 mod oriented_box;
+mod oriented_box_boundary;
 mod plane;
 mod point;
 mod polyline;
