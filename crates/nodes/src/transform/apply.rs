@@ -10,14 +10,14 @@
 //! | circle, arc | a circle or arc under a similarity (move, rotate, mirror, uniform scale); otherwise a NURBS curve, exact, as Rhino turns a non-uniformly scaled circle into a NURBS curve |
 //! | curve | [`Curve::transformed`]: lines and polylines stay so under affine maps, circles and arcs under similarities, everything else becomes NURBS |
 //! | surface | the control points transformed (exact for every affine and projective map) |
-//! | box | a box when the image is still a box (see below), else an error |
+//! | box | a box when the image is still a box (see below), else a six-face B-rep |
+//! | B-rep | every surface, curve and vertex transformed; a mirror keeps faces pointing outwards |
 //!
 //! A box stays a box under every transform that maps its three edge directions to mutually
 //! perpendicular directions: rigid motions, mirrors, uniform scales, non-uniform scales and
 //! projections along the box's own axes. A shear, or a non-uniform scale across the box's
-//! axes, makes a parallelepiped, which is not a box; Grasshopper then gives a brep. Until the
-//! kernel has breps that is an error on the node rather than a silently different box. The
-//! test compares the eight transformed corners with the corners of the box rebuilt on the
+//! axes, makes a parallelepiped, which is not a box; as in Grasshopper, the result is then a B-rep.
+//! The test compares the eight transformed corners with the corners of the box rebuilt on the
 //! transformed plane, within [`BOX_TOLERANCE`] relative to the box's size.
 //!
 //! A transform with a NaN or infinite entry is an error for every value, and so is a result
@@ -69,7 +69,8 @@ pub fn transform_value(value: &Value, xform: &Transform) -> Result<Value, NodeEr
         },
         Value::Curve(c) => curve(c.transformed(xform)?),
         Value::Surface(s) => Value::Surface(Shared::new(s.transformed(xform)?)),
-        Value::Box(b) => Value::Box(transform_box(b, xform)?),
+        Value::Box(b) => transform_box(b, xform)?,
+        Value::Brep(b) => Value::Brep(Shared::new(b.transformed(xform)?)),
         other => {
             return Err(NodeError(format!(
                 "cannot transform a {}: it is not geometry",
@@ -101,7 +102,9 @@ fn transform_plane(plane: &Plane, xform: &Transform) -> Result<Plane, NodeError>
 }
 
 /// The image of a box when it is still a box.
-fn transform_box(b: &OrientedBox, xform: &Transform) -> Result<OrientedBox, NodeError> {
+/// A box stays a box under transforms that keep it one; otherwise it becomes a B-rep, as in
+/// Grasshopper.
+fn transform_box(b: &OrientedBox, xform: &Transform) -> Result<Value, NodeError> {
     let out = b.transformed(xform)?;
     let mut corners = b.corners();
     xform.transform_points(&mut corners);
@@ -114,14 +117,10 @@ fn transform_box(b: &OrientedBox, xform: &Transform) -> Result<OrientedBox, Node
         .iter()
         .all(|c| rebuilt.iter().any(|r| r.distance(*c) <= tolerance));
     if still_a_box {
-        Ok(out)
+        Ok(Value::Box(out))
     } else {
-        Err(
-            "the transform skews the box into a shape that is not a box (a brep in \
-             Grasshopper); boxes can be moved, rotated, mirrored, projected and scaled \
-             along their own axes"
-                .into(),
-        )
+        let brep = locus_kernel::Brep::from_box(b)?.transformed(xform)?;
+        Ok(Value::Brep(Shared::new(brep)))
     }
 }
 
@@ -193,7 +192,7 @@ mod tests {
     }
 
     #[test]
-    fn boxes_stay_boxes_or_fail() {
+    fn boxes_stay_boxes_or_become_breps() {
         let rotate = Transform::rotation(0.3, Vector3::new(1.0, 2.0, 3.0), Point3::ORIGIN).unwrap();
         assert!(matches!(
             transform_value(&Value::Box(b()), &rotate),
@@ -205,15 +204,24 @@ mod tests {
             Ok(Value::Box(out)) => assert!((out.volume() - 24.0 * 3.0).abs() < 1e-12),
             other => panic!("expected a box, got {other:?}"),
         }
-        // A shear does not.
+        // A shear does not: the box becomes a B-rep with the sheared corners.
         let shear = Transform::shear(
             &Plane::WORLD_XY,
             Vector3::X,
             Vector3::Y,
             Vector3::new(1.0, 0.0, 1.0),
         );
-        let err = transform_value(&Value::Box(b()), &shear).unwrap_err();
-        assert!(err.0.contains("not a box"), "{err}");
+        match transform_value(&Value::Box(b()), &shear) {
+            Ok(Value::Brep(brep)) => {
+                assert_eq!(brep.faces().len(), 6);
+                let mut corners = b().corners();
+                shear.transform_points(&mut corners);
+                for c in corners {
+                    assert!(brep.vertices().iter().any(|v| v.point.distance(c) < 1e-12));
+                }
+            }
+            other => panic!("expected a B-rep, got {other:?}"),
+        }
         // A projection onto the box's base plane flattens it into a (flat) box.
         let flat = transform_value(
             &Value::Box(b()),
