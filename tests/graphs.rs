@@ -1,0 +1,108 @@
+//! Every graph under `graphs/` meets its expected outputs, and evaluates to identical outputs
+//! and messages with one thread and with all threads.
+
+use std::path::{Path, PathBuf};
+
+use locus_runtime::{COMPARE_TOLERANCE, Document, Evaluator, NodeRegistry, compare_trees};
+
+fn registry() -> NodeRegistry {
+    let mut r = NodeRegistry::new();
+    locus_nodes::register(&mut r);
+    r
+}
+
+fn graph_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("graphs/ is readable") {
+        let path = entry.expect("a directory entry").path();
+        if path.is_dir() {
+            graph_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "ron") {
+            out.push(path);
+        }
+    }
+}
+
+/// Outputs and messages of one evaluation, as text: NaN compares equal to NaN this way.
+fn evaluate(document: &Document, registry: &NodeRegistry, threads: usize) -> (Evaluator, String) {
+    let checked = document.check(registry).expect("the graph checks");
+    let mut evaluator = Evaluator::new(checked.plan);
+    evaluator.set_threads(threads).expect("a thread pool");
+    evaluator.evaluate();
+    let mut dump = String::new();
+    for (name, tree) in evaluator.outputs() {
+        dump.push_str(&format!("{name}: {tree:?}\n"));
+    }
+    for m in evaluator.messages() {
+        dump.push_str(&format!("{m}\n"));
+    }
+    (evaluator, dump)
+}
+
+#[test]
+fn every_graph_meets_its_expectations_with_any_thread_count() {
+    let registry = registry();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("graphs");
+    let mut files = Vec::new();
+    graph_files(&root, &mut files);
+    files.sort();
+    assert!(!files.is_empty(), "no graphs under {}", root.display());
+    let mut failures = Vec::new();
+    for file in &files {
+        let name = file
+            .strip_prefix(&root)
+            .unwrap_or(file)
+            .display()
+            .to_string();
+        let text = std::fs::read_to_string(file).expect("the graph is readable");
+        let document = match Document::parse(&text) {
+            Ok(d) => d,
+            Err(ds) => {
+                failures.push(format!("{name}: does not read: {}", ds[0].message()));
+                continue;
+            }
+        };
+        if let Err(ds) = document.check(&registry) {
+            let first = ds
+                .iter()
+                .find(|d| d.is_error())
+                .map(|d| d.message())
+                .unwrap_or_default();
+            failures.push(format!("{name}: does not check: {first}"));
+            continue;
+        }
+        let (serial, serial_dump) = evaluate(&document, &registry, 1);
+        let (_, parallel_dump) = evaluate(&document, &registry, 0);
+        if serial_dump != parallel_dump {
+            failures.push(format!("{name}: one thread and all threads differ"));
+        }
+        let plan = &document.check(&registry).expect("checked above").plan;
+        for (output, literal) in &document.graph().expected {
+            let Some(&(_, node, port)) = plan.outputs.iter().find(|(n, _, _)| n == output) else {
+                failures.push(format!(
+                    "{name}: expected value for unknown output {output}"
+                ));
+                continue;
+            };
+            let data_type = plan.nodes[node].node_type.outputs[port].data_type;
+            let want = match literal.parse(data_type) {
+                Ok(t) => t,
+                Err(e) => {
+                    failures.push(format!(
+                        "{name}: {output}: expected value does not read: {e}"
+                    ));
+                    continue;
+                }
+            };
+            let got = serial.output(output).cloned().unwrap_or_default();
+            for line in compare_trees(&got, &want, COMPARE_TOLERANCE, 5) {
+                failures.push(format!("{name}: {output} {line}"));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} problems:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
