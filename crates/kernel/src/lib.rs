@@ -28,7 +28,9 @@ mod circle;
 mod continuity;
 mod curve;
 mod curve_closest_point;
+mod curve_kinks;
 mod curve_measure;
+mod curve_split;
 mod error;
 mod hermite;
 mod interpolate;
@@ -65,6 +67,7 @@ pub use crate::continuity::{
 };
 pub use crate::curve::Curve;
 pub use crate::curve_closest_point::CurveClosestPoint;
+pub use crate::curve_kinks::KINK_ANGLE_TOLERANCE;
 pub use crate::error::{Error, Result};
 pub use crate::hermite::CubicHermite;
 pub use crate::interpolate::{EndTangents, KnotStyle};
