@@ -82,7 +82,7 @@ impl Curve {
     /// # Errors
     /// [`Error::InvalidInput`] for a negative or NaN tolerance.
     pub fn kinks(&self, angle_tolerance: f64) -> Result<Vec<f64>> {
-        if !(angle_tolerance >= 0.0) {
+        if angle_tolerance.is_nan() || angle_tolerance < 0.0 {
             return Err(Error::InvalidInput(format!(
                 "kink angle tolerance {angle_tolerance} is not a non-negative angle"
             )));

@@ -34,6 +34,7 @@ mod curve_split;
 mod error;
 mod hermite;
 mod interpolate;
+mod interpolate_periodic;
 mod interval;
 mod line;
 mod nurbs_curve;
