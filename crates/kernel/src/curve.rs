@@ -13,8 +13,8 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::nurbs_curve::{curvature_vector, frame_from, signed_curvature};
 use crate::{
-    Arc, Bezier, Circle, Error, Interval, Line, NurbsCurve, Plane, Point3, Polyline, Result,
-    Transform, Vector3,
+    Arc, Bezier, Circle, CubicHermite, Error, Interval, Line, NurbsCurve, Plane, Point3, Polyline,
+    Result, Transform, Vector3,
 };
 
 /// A curve of any kind the kernel supports.
@@ -95,6 +95,15 @@ impl From<NurbsCurve> for Curve {
 impl From<Bezier> for Curve {
     fn from(curve: Bezier) -> Self {
         Self::Nurbs(curve.to_nurbs())
+    }
+}
+
+impl TryFrom<CubicHermite> for Curve {
+    type Error = Error;
+
+    /// The Hermite cubic's NURBS form; fails for non-finite input.
+    fn try_from(curve: CubicHermite) -> Result<Self> {
+        Ok(Self::Nurbs(curve.to_nurbs()?))
     }
 }
 
@@ -191,6 +200,28 @@ impl Curve {
 
     fn map_natural(&self, t: f64) -> f64 {
         self.parameter_map().map_or(t, |m| m.to_natural(t))
+    }
+
+    /// Evaluates the curve at every parameter of `ts` into `out` (NURBS curves through the
+    /// span-reusing batch path of [`NurbsCurve::points_at`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when `ts` and `out` have different lengths.
+    pub fn points_at(&self, ts: &[f64], out: &mut [Point3]) -> Result<()> {
+        if let Self::Nurbs(c) = self {
+            return c.points_at(ts, out);
+        }
+        if ts.len() != out.len() {
+            return Err(Error::InvalidInput(format!(
+                "{} parameters for an output buffer of {} points",
+                ts.len(),
+                out.len()
+            )));
+        }
+        for (o, &t) in out.iter_mut().zip(ts) {
+            *o = self.point_at(t);
+        }
+        Ok(())
     }
 
     /// The point at the start of the domain.
@@ -560,6 +591,35 @@ mod tests {
         let f = s[3].frame_at(2.0).unwrap();
         let toward_center = s[2].curvature_at(2.0).unwrap().try_normalize().unwrap();
         assert!(f.y_axis.dot(toward_center) > 1.0 - 1e-12);
+    }
+
+    #[test]
+    fn batch_points_and_hermite_conversion() {
+        for c in samples() {
+            let d = c.domain();
+            let ts: Vec<f64> = (0..=50).map(|i| d.parameter_at(i as f64 / 50.0)).collect();
+            let mut out = vec![Point3::ORIGIN; ts.len()];
+            c.points_at(&ts, &mut out).unwrap();
+            for (&t, p) in ts.iter().zip(&out) {
+                assert!(p.distance(c.point_at(t)) < 1e-12);
+            }
+            assert!(c.points_at(&ts, &mut out[1..]).is_err());
+        }
+        let h = CubicHermite::new(
+            Point3::ORIGIN,
+            Vector3::X,
+            Point3::new(1.0, 1.0, 0.0),
+            Vector3::Y,
+        );
+        let c = Curve::try_from(h).unwrap();
+        assert!(c.point_at(0.5).distance(h.point_at(0.5)) < 1e-15);
+        let bad = CubicHermite::new(
+            Point3::ORIGIN,
+            Vector3::new(f64::NAN, 0.0, 0.0),
+            Point3::ORIGIN,
+            Vector3::Y,
+        );
+        assert!(Curve::try_from(bad).is_err());
     }
 
     #[test]

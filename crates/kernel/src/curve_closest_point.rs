@@ -53,15 +53,15 @@ impl NurbsCurve {
             best = end;
         }
         let samples = samples_per_span(self.degree(), self.is_rational());
-        let breaks = self.span_breaks();
-        for w in breaks.windows(2) {
-            let a = w[0].max(lo);
-            let b = w[1].min(hi);
+        let spans: Vec<usize> = self.span_indices().collect();
+        for span in spans {
+            let a = self.knots()[span].max(lo);
+            let b = self.knots()[span + 1].min(hi);
             if b <= a {
                 continue;
             }
             let mut prev_t = a;
-            let mut prev_g = self.distance_gradient(p, a).0;
+            let mut prev_g = self.distance_gradient(span, p, a).0;
             let mut best_sample = self.candidate(p, a);
             for k in 1..=samples {
                 let t = if k == samples {
@@ -69,13 +69,13 @@ impl NurbsCurve {
                 } else {
                     a + (b - a) * (k as f64 / samples as f64)
                 };
-                let (g, _) = self.distance_gradient(p, t);
+                let (g, _) = self.distance_gradient(span, p, t);
                 let c = self.candidate(p, t);
                 if c.distance < best_sample.distance {
                     best_sample = c;
                 }
                 if prev_g < 0.0 && g >= 0.0 {
-                    let root = self.polish(p, prev_t, t);
+                    let root = self.polish(span, p, prev_t, t);
                     let c = self.candidate(p, root);
                     if c.distance < best.distance || (c.distance == best.distance && c.t < best.t) {
                         best = c;
@@ -100,22 +100,23 @@ impl NurbsCurve {
         }
     }
 
-    /// `g(t) = C'·(C − P)` and its derivative `C''·(C − P) + |C'|²`.
-    fn distance_gradient(&self, p: Point3, t: f64) -> (f64, f64) {
+    /// `g(t) = C'·(C − P)` and its derivative `C''·(C − P) + |C'|²`, on the polynomial piece of
+    /// span `span` (so that at the span's end the derivatives are those from the left).
+    fn distance_gradient(&self, span: usize, p: Point3, t: f64) -> (f64, f64) {
         let mut d = [Vector3::ZERO; 3];
-        self.derivatives_into(t, &mut d);
+        self.derivatives_in_span(span, t, &mut d);
         let r = Point3::from_vector(d[0]) - p;
         (d[1].dot(r), d[2].dot(r) + d[1].length_squared())
     }
 
     /// A root of `g` in `[a, b]` with `g(a) < 0 ≤ g(b)`: Newton's method, falling back to
     /// bisection whenever a step would leave the bracket.
-    fn polish(&self, p: Point3, a: f64, b: f64) -> f64 {
+    fn polish(&self, span: usize, p: Point3, a: f64, b: f64) -> f64 {
         let (mut lo, mut hi) = (a, b);
         let mut t = 0.5 * (a + b);
         let scale = a.abs().max(b.abs()).max(1.0);
         for _ in 0..100 {
-            let (g, dg) = self.distance_gradient(p, t);
+            let (g, dg) = self.distance_gradient(span, p, t);
             if g == 0.0 {
                 return t;
             }

@@ -300,10 +300,15 @@ impl NurbsCurve {
 
     /// The homogeneous derivatives `A^(k) = (Σ N^(k) w P, Σ N^(k) w)` for `k ≤ min(order,
     /// degree)` at `t`, from the right of a knot (from the left at the end of the domain).
-    fn homogeneous_derivatives(&self, t: f64, order: usize, out: &mut [[f64; 4]; MAX_ORDER]) {
+    fn homogeneous_derivatives(
+        &self,
+        span: usize,
+        t: f64,
+        order: usize,
+        out: &mut [[f64; 4]; MAX_ORDER],
+    ) {
         let p = self.degree;
         let top = order.min(p);
-        let span = basis::span_index(p, &self.knots, t);
         let mut ders = [[0.0; MAX_ORDER]; MAX_ORDER];
         basis::basis_function_derivatives(p, &self.knots, span, t, top, &mut ders[..=top]);
         let first = span + 1 - p;
@@ -328,13 +333,21 @@ impl NurbsCurve {
     /// At an interior knot the derivatives are those from the right (the span starting at the
     /// knot); at the end of the domain those from the left.
     pub fn derivatives_into(&self, t: f64, out: &mut [Vector3]) {
+        let span = basis::span_index(self.degree, &self.knots, t);
+        self.derivatives_in_span(span, t, out);
+    }
+
+    /// As [`NurbsCurve::derivatives_into`], with the polynomial piece of the span `span` (a
+    /// Rhino knot index from [`NurbsCurve::span_indices`]), so that at a knot the derivatives
+    /// of either adjacent piece can be had.
+    pub(crate) fn derivatives_in_span(&self, span: usize, t: f64, out: &mut [Vector3]) {
         if out.is_empty() {
             return;
         }
         let order = out.len() - 1;
         let p = self.degree;
         let mut aw = [[0.0; 4]; MAX_ORDER];
-        self.homogeneous_derivatives(t, order, &mut aw);
+        self.homogeneous_derivatives(span, t, order, &mut aw);
         let w0 = aw[0][3];
         // C^(k) = (A^(k) − Σ_{i=1..k} C(k,i) w^(i) C^(k−i)) / w, with w^(i) = 0 for i > degree.
         for k in 0..=order {

@@ -10,7 +10,7 @@
 //! ```
 //!
 //! for the homogeneous curve `A = (Σ N w P, Σ N w)`, and then evaluates each parameter with
-//! Horner's rule: `p` fused multiply–adds per coordinate and no division (one for rational
+//! Horner's rule: `p` multiply–adds per coordinate and no division (one for rational
 //! curves). The span of consecutive parameters is found by checking the previous span first, so
 //! sorted input never searches.
 //!
@@ -36,6 +36,24 @@ impl NurbsCurve {
     /// (increasing or decreasing) parameters are fastest. For batches of at least four
     /// parameters per span (and degree at most 7) the method allocates one table of
     /// `degree + 1` coefficients per span, once per call; otherwise it does not allocate.
+    ///
+    /// # Performance
+    /// Measured with `cargo bench -p locus-kernel --bench curve_eval` (1,000,000 parameters on a
+    /// cubic with 64 control points and 61 spans, one thread, on the shared 2-core AMD EPYC
+    /// development machine under a load average of about 9, so wall-clock figures are
+    /// depressed; CPU time is that of the benchmarking thread):
+    ///
+    /// | path | wall clock | CPU time |
+    /// | --- | --- | --- |
+    /// | `points_at`, sorted parameters | 57 M points/s | 101 M points/s |
+    /// | `points_at`, scrambled parameters | 18 M points/s | 46 M points/s |
+    /// | `point_at` loop (baseline) | 5.0 M points/s | 16.8 M points/s |
+    /// | rational: `points_at`, sorted | 32 M points/s | 113 M points/s |
+    /// | rational: `point_at` loop | 6.4 M points/s | 12.9 M points/s |
+    ///
+    /// Sorted batches are 6× (non-rational) to 9× (rational) faster than the per-point path in
+    /// CPU time, and above the 30 M points/s target even in wall-clock time on the loaded
+    /// machine.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] when `ts` and `out` have different lengths.
@@ -158,11 +176,13 @@ impl PowerForm {
         let dt = t - self.starts[s];
         let c = &self.coefficients[s * (p + 1)..(s + 1) * (p + 1)];
         let [mut x, mut y, mut z, mut w] = c[0];
+        // Plain multiply-add rather than `mul_add`, which is a libm call on targets compiled
+        // without the FMA feature.
         for k in &c[1..] {
-            x = x.mul_add(dt, k[0]);
-            y = y.mul_add(dt, k[1]);
-            z = z.mul_add(dt, k[2]);
-            w = w.mul_add(dt, k[3]);
+            x = x * dt + k[0];
+            y = y * dt + k[1];
+            z = z * dt + k[2];
+            w = w * dt + k[3];
         }
         if self.rational {
             let r = 1.0 / w;

@@ -301,3 +301,61 @@ fn occt_arc_lengths() {
     }
     failures.finish("occt arc length");
 }
+
+/// Rhino's circle and arc NURBS forms: the kernel's exact forms must rebuild the oracle's
+/// control points, weights and knots.
+#[test]
+fn opennurbs_exact_forms_of_circle_and_arc() {
+    use locus_kernel::{Arc, Circle, Interval, Plane};
+    let oracle = load_oracle("opennurbs-cases.json");
+    let cases = oracle["curves"].as_array().expect("curves");
+    let find = |name: &str| {
+        cases
+            .iter()
+            .find(|c| c["name"] == name)
+            .unwrap_or_else(|| panic!("no case {name}"))
+    };
+    let mut failures = Failures::default();
+    let circle = Circle::new(
+        Plane {
+            origin: Point3::new(1.0, 2.0, 3.0),
+            ..Plane::WORLD_XY
+        },
+        10.0,
+    )
+    .expect("circle");
+    let arc = Arc::new(
+        Circle::new(Plane::WORLD_XY, 5.0).expect("circle"),
+        Interval::new(0.0, 2.0),
+    )
+    .expect("arc");
+    for (name, built) in [
+        ("circle-r10-at-1,2,3", circle.to_nurbs()),
+        ("arc-r5-2rad", arc.to_nurbs()),
+    ] {
+        let expected = curve_from(find(name));
+        failures.check(built.knots() == expected.knots(), || {
+            format!(
+                "{name}: knots {:?}, expected {:?}",
+                built.knots(),
+                expected.knots()
+            )
+        });
+        failures.check(built.point_count() == expected.point_count(), || {
+            format!("{name}: {} control points", built.point_count())
+        });
+        for (i, ((p, w), (q, v))) in built
+            .points()
+            .iter()
+            .zip(built.weights())
+            .zip(expected.points().iter().zip(expected.weights()))
+            .enumerate()
+        {
+            failures.check(close3(arr(*p), arr(*q), REL) && close(*w, *v, REL), || {
+                format!("{name}: control point {i} {p:?} w {w}, expected {q:?} w {v}")
+            });
+        }
+        check_samples(name, &built, find(name), &mut failures);
+    }
+    failures.finish("exact form");
+}

@@ -1,12 +1,51 @@
-//! The node library of locus.
+//! The node library of locus: Grasshopper's components, by category.
+//!
+//! Node types are registered explicitly: `locus_nodes::register(&mut registry)` adds every
+//! node type of the library, and each category module has its own `register`. Node ids are
+//! `category.snake_name` (`maths.addition`), defined once as constants next to each node.
+//!
+//! # Index
+//!
+//! **Params** ([`params`])
+//! - Primitive ([`params::primitive`]): Number \[Num\], Integer \[Int\], Boolean \[Bool\],
+//!   Text \[Txt\], Domain.
+//! - Geometry ([`params::curve`]): Curve \[Crv\].
+//!
+//! **Maths** ([`maths`])
+//! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
+//!   \[A+B\], Subtraction \[A-B\], Multiplication \[A×B\], Division \[A/B\], Negative
+//!   \[Neg\], Absolute \[Abs\], Power \[Pow\], Modulus \[Mod\], Larger Than \[Larger\],
+//!   Smaller Than \[Smaller\], Equality \[Equals\], Gate And/Or/Xor/Nand/Nor/Xnor/Not.
+//! - Domain ([`maths::domain`]): Construct Domain \[Dom\], Deconstruct Domain \[DeDomain\],
+//!   Remap Numbers \[ReMap\].
+//! - Script ([`maths::script`]): Expression, Evaluate \[Eval\]; the formula language is
+//!   [`expression`].
+//!
+//! **Sets**
+//! - Sequence ([`maths::sequence`]): Range, Series.
+//!
+//! **Curve** ([`curve`])
+//! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc.
+//! - Spline ([`curve::spline`]): PolyLine \[PLine\], Bezier Span \[BzSpan\], Nurbs Curve
+//!   \[Nurbs\], Nurbs Curve PWK \[NurbCrv\], Interpolate \[IntCrv\], Knot Vector \[Knots\].
+//! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,
+//!   Curve Domain \[CrvDom\], End Points \[End\], Length \[Len\], Evaluate Length \[Eval\],
+//!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\].
+//! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
+//!   Shatter.
+//! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
+//! - The Curve parameter \[Crv\] is in [`params::curve`].
 
 pub mod curve;
+pub mod expression;
+pub mod maths;
 pub mod params;
 
 use locus_runtime::NodeRegistry;
 
 /// Registers every node type of the library.
 pub fn register(registry: &mut NodeRegistry) {
-    curve::register(registry);
     params::register(registry);
+    maths::register(registry);
+    curve::register(registry);
 }

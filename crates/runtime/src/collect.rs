@@ -1,77 +1,129 @@
 //! Collecting a node's input: modifiers and casting to the port's type.
 //!
 //! Order of application (a decision where Grasshopper is silent, reference §1.4): structure
-//! first (flatten, graft, simplify), then reverse, then the cast to the port's type, then the
-//! per-item modifiers (invert, degrees, reparameterize), which need typed items.
+//! first (flatten, graft, simplify, in the order the graph lists them), then reverse, then the
+//! cast to the port's type, then the per-item modifiers (invert, degrees, reparameterize), which
+//! need typed items. Data that needs no change is borrowed, not copied.
 
 use std::borrow::Cow;
 
-use crate::{Branch, DataTree, DataType, Level, Message, Modifier, NodeId, PlanInput, TreePath};
+use crate::{
+    Branch, DataTree, DataType, GraftMode, Level, Message, Modifier, NodeId, PlanInput,
+    SimplifyMode, Value, cast_tree,
+};
 
 /// The input tree a node sees: `raw` (wired, set or given data) with the port's modifiers
 /// applied and every item cast to the port's type. Failed casts become nulls with an error
-/// message naming the path and item index.
+/// message naming the port, path and item index.
 pub(crate) fn prepare_input<'a>(
     node: &NodeId,
     input: &PlanInput,
     raw: Option<Cow<'a, DataTree>>,
     messages: &mut Vec<Message>,
 ) -> Cow<'a, DataTree> {
-    let Some(raw) = raw else {
+    let Some(mut tree) = raw else {
         return Cow::Owned(DataTree::new());
     };
-    let mut tree = raw;
-    for modifier in &input.modifiers {
+    for modifier in [
+        Modifier::Flatten,
+        Modifier::Graft,
+        Modifier::Simplify,
+        Modifier::Reverse,
+    ] {
+        if !input.modifiers.contains(&modifier) {
+            continue;
+        }
+        let t = tree.to_mut();
         match modifier {
-            Modifier::Flatten => tree = Cow::Owned(flatten(&tree)),
-            Modifier::Graft => tree = Cow::Owned(graft(&tree)),
-            Modifier::Reverse => {
-                let mut t = tree.into_owned();
-                let branches = t
-                    .into_branches()
-                    .into_iter()
-                    .map(|(p, mut b)| {
-                        b.reverse();
-                        (p, b)
-                    })
-                    .collect::<Vec<_>>();
-                t = DataTree::from_branches(branches);
-                tree = Cow::Owned(t);
-            }
-            _ => {}
+            Modifier::Flatten => t.flatten(),
+            Modifier::Graft => t.graft(GraftMode::ALL),
+            Modifier::Simplify => t.simplify(SimplifyMode::All),
+            _ => t.reverse_items(),
         }
     }
     let target = input.port.data_type;
-    if target == DataType::Generic
-        || tree
+    let needs_cast = target != DataType::Generic
+        && tree
             .branches()
             .iter()
-            .all(|(_, b)| b.data_type() == target || b.is_empty())
-    {
-        return tree;
+            .any(|(_, b)| !b.is_empty() && b.data_type() != target);
+    if needs_cast {
+        let (cast, failures) = cast_tree(&tree, target);
+        for (path, index, error) in failures {
+            messages.push(Message {
+                node: node.clone(),
+                level: Level::Error,
+                path: Some(path),
+                index: Some(index),
+                text: format!("input {}: {error}", input.port.nickname),
+            });
+        }
+        tree = Cow::Owned(cast);
     }
-    let _ = (node, messages, Level::Error);
+    let per_item = |m| input.modifiers.contains(&m);
+    if per_item(Modifier::Invert) && target == DataType::Boolean {
+        map_items::<bool>(tree.to_mut(), |b| !b);
+    }
+    if per_item(Modifier::Degrees) && target == DataType::Number {
+        map_items::<f64>(tree.to_mut(), f64::to_radians);
+    }
+    if per_item(Modifier::Reparameterize) {
+        reparameterize(node, input, tree.to_mut(), messages);
+    }
     tree
 }
 
-fn flatten(tree: &DataTree) -> DataTree {
-    let mut b = Branch::new(tree.data_type());
-    for (_, branch) in tree.branches() {
-        b.extend(branch);
-    }
-    let mut t = DataTree::new();
-    t.insert(TreePath::zero(), b);
-    t
+/// Replaces every item of type `T` by `f(item)`, keeping nulls.
+fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
+    let branches = std::mem::take(tree).into_branches();
+    let mapped = branches.into_iter().map(|(path, branch)| {
+        let (mut column, nulls) = branch.into_parts();
+        if let Some(items) = T::vec_mut(&mut column) {
+            for x in items.iter_mut() {
+                *x = f(*x);
+            }
+        }
+        (path, Branch::from_parts(column, nulls))
+    });
+    *tree = DataTree::from_branches(mapped);
 }
 
-fn graft(tree: &DataTree) -> DataTree {
-    let mut out = Vec::with_capacity(tree.item_count());
-    for (path, branch) in tree.branches() {
-        for i in 0..branch.len() {
-            let mut b = Branch::new(branch.data_type());
-            b.extend_range(branch, i..i + 1);
-            out.push((path.with_appended(i as u32), b));
+/// Reparameterizes curves and surfaces to the domain 0 to 1 (in each direction).
+fn reparameterize(
+    node: &NodeId,
+    input: &PlanInput,
+    tree: &mut DataTree,
+    messages: &mut Vec<Message>,
+) {
+    let branches = std::mem::take(tree).into_branches();
+    let mut out = Vec::with_capacity(branches.len());
+    for (path, branch) in branches {
+        let mut b = Branch::new(branch.data_type());
+        for (index, item) in branch.values().enumerate() {
+            let result = match item {
+                Some(Value::Curve(c)) => c
+                    .reparameterized(locus_kernel::Interval::UNIT)
+                    .map(|c| Some(Value::Curve(crate::Shared::new(c)))),
+                Some(Value::Surface(s)) => s
+                    .reparameterized(locus_kernel::Interval::UNIT, locus_kernel::Interval::UNIT)
+                    .map(|s| Some(Value::Surface(crate::Shared::new(s)))),
+                other => Ok(other),
+            };
+            match result {
+                Ok(v) => b.push_option(v),
+                Err(e) => {
+                    messages.push(Message {
+                        node: node.clone(),
+                        level: Level::Error,
+                        path: Some(path.clone()),
+                        index: Some(index),
+                        text: format!("input {}: cannot reparameterize: {e}", input.port.nickname),
+                    });
+                    b.push_null();
+                }
+            }
         }
+        out.push((path, b));
     }
-    DataTree::from_branches(out)
+    *tree = DataTree::from_branches(out);
 }

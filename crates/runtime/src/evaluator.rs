@@ -446,7 +446,7 @@ impl Evaluator {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{DataType, Matching, NodeType, PlanInput, PlanNode, Port};
+    use crate::{DataType, Matching, NodeType, PlanInput, PlanNode, Port, Value};
 
     fn number_source() -> Arc<NodeType> {
         Arc::new(
@@ -654,5 +654,37 @@ mod tests {
         std::panic::set_hook(hook);
         assert_eq!(e.node_level("sum2"), Some(Level::Error));
         assert_eq!(numbers(e.node_output("sum1", "R").unwrap()), [11.0, 12.0]);
+    }
+
+    #[test]
+    fn failed_casts_become_nulls_with_messages() {
+        let mut p = plan();
+        p.nodes[1].inputs[0].value = Some(DataTree::from_list(vec![
+            Value::Text("abc".into()),
+            Value::Text("10".into()),
+        ]));
+        let mut e = Evaluator::new(p);
+        e.evaluate();
+        let texts: Vec<String> = e.messages().map(ToString::to_string).collect();
+        assert_eq!(
+            texts,
+            ["error: node \"b\" at {0}[0]: input N: invalid cast: Text \"abc\" → Number"]
+        );
+        assert_eq!(numbers(e.node_output("sum1", "R").unwrap())[1], 12.0);
+    }
+
+    #[test]
+    fn graft_and_degrees_modifiers_apply_before_solving() {
+        let mut p = plan();
+        p.nodes[3].inputs[0].modifiers = vec![crate::Modifier::Graft];
+        p.nodes[4].inputs[1].modifiers = vec![crate::Modifier::Degrees];
+        p.nodes[2].inputs[0].value = Some(DataTree::from_item(180.0));
+        let mut e = Evaluator::new(p);
+        e.evaluate();
+        let out = e.output("sum").unwrap();
+        let paths: Vec<String> = out.paths().map(ToString::to_string).collect();
+        assert_eq!(paths, ["{0;0}", "{0;1}"]);
+        let v = numbers(out);
+        assert!((v[0] - (11.0 + std::f64::consts::PI)).abs() < 1e-12);
     }
 }

@@ -161,13 +161,15 @@ impl Branch {
         let before = self.items.len();
         self.items.extend_from(&other.items, range.clone());
         if other.has_nulls() || self.has_nulls() {
-            if self.nulls.is_empty() {
+            let had_nulls = self.has_nulls();
+            if !had_nulls {
                 self.nulls = vec![false; before];
             }
             for i in range {
                 self.nulls.push(other.is_null(i));
             }
-            if !self.nulls.iter().any(|&n| n) {
+            // A non-empty mask holds a null, so only the appended part needs a look.
+            if !had_nulls && !self.nulls[before..].iter().any(|&n| n) {
                 self.nulls.clear();
             }
         }

@@ -512,7 +512,8 @@ mod tests {
             .input(DataTree::from_item(3.0))
             .input(DataTree::from_item(0.0))
             .run();
-        assert!(single_error(&r).contains("a Number is not a curve"));
+        assert!(single_error(&r).contains("invalid cast: Number"));
+        assert_eq!(values(&r.outputs[0]), vec![None]);
     }
 
     #[test]

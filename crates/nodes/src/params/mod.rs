@@ -1,11 +1,18 @@
-//! Params: containers that hold values and cast what flows into them to their type
-//! (Grasshopper's Params tab).
+//! Params: containers that hold values and cast what flows in (Grasshopper's Params tab).
+//!
+//! A parameter node is how a graph declares a named value: it has one input and one output,
+//! both called by the parameter's name and nickname (`Number`/`Num`). The input takes the
+//! values given in the graph or wired in, with list access, so the tree's paths, empty
+//! branches and nulls pass through unchanged; every item is cast to the parameter's type on
+//! the way in (a failed cast is an error naming the item, which becomes null).
 
 pub mod curve;
+pub mod primitive;
 
 use locus_runtime::NodeRegistry;
 
 /// Registers every Params node type.
 pub fn register(registry: &mut NodeRegistry) {
+    primitive::register(registry);
     curve::register(registry);
 }

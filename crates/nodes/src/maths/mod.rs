@@ -1,0 +1,100 @@
+//! Maths: arithmetic and logic operators, domains, number sequences and formulas
+//! (Grasshopper's Maths tab, plus Range and Series from Sets › Sequence).
+//!
+//! Numeric results that are not finite (division by zero, `sqrt` of a negative number,
+//! overflow) are written as NaN with a warning, and the item is kept so that lists stay
+//! aligned, as Grasshopper's number parameter does.
+
+pub mod boolean;
+pub mod comparison;
+pub mod domain;
+pub mod operators;
+pub mod script;
+pub mod sequence;
+
+use locus_runtime::{NodeRegistry, Solve};
+
+use crate::expression::Operand;
+
+/// Registers every Maths node type.
+pub fn register(registry: &mut NodeRegistry) {
+    operators::register(registry);
+    comparison::register(registry);
+    boolean::register(registry);
+    domain::register(registry);
+    sequence::register(registry);
+    script::register(registry);
+}
+
+/// The warning for an invalid numeric result, `why` saying what produced it.
+pub(crate) fn invalid_number_warning(why: &str) -> String {
+    format!("invalid numeric result, kept as NaN: {why}")
+}
+
+/// Writes a number to an item output; a non-finite number is written as NaN with a warning
+/// built by `why`.
+pub(crate) fn set_number(s: &mut Solve<'_>, output: usize, x: f64, why: impl FnOnce() -> String) {
+    if x.is_finite() {
+        s.set(output, x);
+    } else {
+        s.warning(invalid_number_warning(&why()));
+        s.set(output, f64::NAN);
+    }
+}
+
+/// Writes an operand to an item output, non-finite numbers in it as NaN. `why` says which
+/// invalid number (an input, or an intermediate result) was met on the way, if any: it is
+/// reported as a warning even when the result itself is finite (as `vector / ∞` is).
+pub(crate) fn set_operand(s: &mut Solve<'_>, output: usize, r: Operand, why: Option<String>) {
+    let why = why.or_else(|| (!r.is_finite()).then(|| format!("the result is {r}")));
+    if let Some(why) = why {
+        s.warning(if r.is_finite() {
+            format!("invalid number on the way to the result: {why}")
+        } else {
+            invalid_number_warning(&why)
+        });
+    }
+    s.set_value(output, Some(r.with_invalid_as_nan().into_value()));
+}
+
+#[cfg(test)]
+pub(crate) mod test_support {
+    //! Helpers for node tests.
+
+    use locus_runtime::{DataTree, Level, NodeCallResult, Value};
+
+    /// The items of an output tree, in order, `None` for nulls.
+    pub(crate) fn values(tree: &DataTree) -> Vec<Option<Value>> {
+        tree.values().collect()
+    }
+
+    /// The numbers of an output tree (panics on a non-number, which fails the test).
+    pub(crate) fn numbers(tree: &DataTree) -> Vec<f64> {
+        tree.values()
+            .map(|v| match v {
+                Some(Value::Number(x)) => x,
+                other => panic!("expected a number, got {other:?}"),
+            })
+            .collect()
+    }
+
+    /// The booleans of an output tree.
+    pub(crate) fn booleans(tree: &DataTree) -> Vec<bool> {
+        tree.values()
+            .map(|v| match v {
+                Some(Value::Boolean(b)) => b,
+                other => panic!("expected a boolean, got {other:?}"),
+            })
+            .collect()
+    }
+
+    /// The texts of the messages of one level.
+    pub(crate) fn messages(result: &NodeCallResult, level: Level) -> Vec<String> {
+        result
+            .messages
+            .iter()
+            .filter(|m| m.level == level)
+            .map(|m| m.text.clone())
+            .collect()
+    }
+}

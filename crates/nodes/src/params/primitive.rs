@@ -1,0 +1,185 @@
+//! Params › Primitive: Number, Integer, Boolean, Text and Domain parameters.
+//!
+//! Each has one list-access input and one list output of the same name and nickname; the
+//! graph tells them apart by direction (`Num` as an input is the values coming in, `Num` as
+//! an output the values going on).
+
+use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+
+/// Id of [`number`].
+pub const NUMBER: &str = "params.number";
+/// Id of [`integer`].
+pub const INTEGER: &str = "params.integer";
+/// Id of [`boolean`].
+pub const BOOLEAN: &str = "params.boolean";
+/// Id of [`text`].
+pub const TEXT: &str = "params.text";
+/// Id of [`domain`].
+pub const DOMAIN: &str = "params.domain";
+
+/// Registers the primitive parameters.
+pub fn register(registry: &mut NodeRegistry) {
+    for t in [number(), integer(), boolean(), text(), domain()] {
+        registry.register(t);
+    }
+}
+
+/// A parameter node of type `data_type`.
+fn parameter(
+    id: &str,
+    name: &str,
+    nickname: &str,
+    data_type: DataType,
+    description: &str,
+    accepts: &str,
+) -> NodeType {
+    NodeType::new(id, name, nickname, "Params")
+        .subcategory("Primitive")
+        .description(&format!(
+            "{description} A parameter passes its data through unchanged (paths, empty \
+             branches and nulls included) after casting every item to its type; a graph uses \
+             it to declare a named input. Items that do not cast are errors and become null."
+        ))
+        .input(Port::new(name, nickname, data_type).list().doc(&format!(
+            "The values, given in the graph or wired in: {accepts}. No default; a parameter \
+             without data warns that it failed to collect data."
+        )))
+        .output(
+            Port::new(name, nickname, data_type)
+                .list()
+                .doc("The same values, cast."),
+        )
+        .solve(|s| {
+            if let Some(branch) = s.branch(0) {
+                let branch = branch.clone();
+                s.set_branch(0, branch);
+            }
+            Ok(())
+        })
+}
+
+/// Number \[Num\]: a collection of real numbers.
+pub fn number() -> NodeType {
+    parameter(
+        NUMBER,
+        "Number",
+        "Num",
+        DataType::Number,
+        "Contains a collection of floating point numbers.",
+        "numbers, integers, booleans (0 or 1), text that reads as a number, or domains",
+    )
+}
+
+/// Integer \[Int\]: a collection of whole numbers.
+pub fn integer() -> NodeType {
+    parameter(
+        INTEGER,
+        "Integer",
+        "Int",
+        DataType::Integer,
+        "Contains a collection of integer numbers.",
+        "integers, numbers (rounded to the nearest whole number), booleans (0 or 1) or text \
+         that reads as a whole number",
+    )
+}
+
+/// Boolean \[Bool\]: a collection of booleans.
+pub fn boolean() -> NodeType {
+    parameter(
+        BOOLEAN,
+        "Boolean",
+        "Bool",
+        DataType::Boolean,
+        "Contains a collection of boolean values.",
+        "booleans, numbers (0 is false, anything else true) or the text True/False",
+    )
+}
+
+/// Text \[Txt\]: a collection of texts.
+pub fn text() -> NodeType {
+    parameter(
+        TEXT,
+        "Text",
+        "Txt",
+        DataType::Text,
+        "Contains a collection of text fragments.",
+        "text, or any value, which is written as text",
+    )
+}
+
+/// Domain \[Domain\]: a collection of numeric domains.
+pub fn domain() -> NodeType {
+    parameter(
+        DOMAIN,
+        "Domain",
+        "Domain",
+        DataType::Domain,
+        "Contains a collection of numeric domains.",
+        "domains, numbers (x is the domain 0 to x) or text such as \"0 To 10\"",
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use locus_kernel::Interval;
+    use locus_runtime::{Branch, DataTree, Level, NodeCall, TreePath, Value};
+
+    use super::*;
+
+    #[test]
+    fn structure_and_nulls_pass_through() {
+        let mut with_null = Branch::new(DataType::Number);
+        with_null.push(1.0);
+        with_null.push_null();
+        with_null.push(3.0);
+        let input = DataTree::from_branches([
+            (TreePath::new(vec![0, 0]), with_null),
+            (TreePath::new(vec![0, 1]), Branch::new(DataType::Number)),
+            (TreePath::new(vec![0, 2]), Branch::from_items(vec![4.0])),
+        ]);
+        let r = NodeCall::new(&number()).input(input.clone()).run();
+        assert_eq!(r.outputs[0], input);
+        assert!(r.messages.is_empty());
+    }
+
+    #[test]
+    fn every_primitive_passes_its_type() {
+        let cases = [
+            (integer(), DataTree::from_list(vec![1_i64, -2])),
+            (boolean(), DataTree::from_list(vec![true, false])),
+            (
+                text(),
+                DataTree::from_list(vec!["a".to_owned(), String::new()]),
+            ),
+            (domain(), DataTree::from_item(Interval::new(2.0, 5.0))),
+        ];
+        for (node, tree) in cases {
+            let r = NodeCall::new(&node).input(tree.clone()).run();
+            assert_eq!(r.outputs[0], tree, "{}", node.id);
+            assert_eq!(node.inputs[0].data_type, node.outputs[0].data_type);
+            assert_eq!(node.inputs[0].nickname, node.outputs[0].nickname);
+        }
+    }
+
+    #[test]
+    fn a_parameter_without_data_warns() {
+        let r = NodeCall::new(&number()).run();
+        assert!(r.outputs[0].is_empty());
+        let warnings: Vec<&str> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Warning)
+            .map(|m| m.text.as_str())
+            .collect();
+        assert_eq!(warnings, ["input parameter Num failed to collect data"]);
+    }
+
+    #[test]
+    fn single_values_stay_single() {
+        let r = NodeCall::new(&domain())
+            .input(DataTree::from_item(Interval::UNIT))
+            .run();
+        let out: Vec<_> = r.outputs[0].values().collect();
+        assert_eq!(out, [Some(Value::Domain(Interval::UNIT))]);
+    }
+}

@@ -1,0 +1,144 @@
+//! Checks every node type of the library for the declarations users and graph files rely on:
+//! well-formed unique ids, documentation on the node and every port, distinct port names and
+//! defaults of the port's type.
+
+use std::collections::HashSet;
+
+use locus_runtime::{DataType, NodeRegistry, NodeType};
+
+fn registry() -> NodeRegistry {
+    let mut registry = NodeRegistry::new();
+    locus_nodes::register(&mut registry);
+    registry
+}
+
+/// Whether `id` is `category.snake_name`: `^[a-z]+\.[a-z_0-9]+$`.
+fn is_well_formed(id: &str) -> bool {
+    let Some((category, name)) = id.split_once('.') else {
+        return false;
+    };
+    !category.is_empty()
+        && category.chars().all(|c| c.is_ascii_lowercase())
+        && !name.is_empty()
+        && name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+}
+
+fn problems(t: &NodeType) -> Vec<String> {
+    let mut out = Vec::new();
+    if !is_well_formed(&t.id) {
+        out.push("the id is not category.snake_name".to_owned());
+    }
+    if t.id.split('.').next() != Some(t.category.to_lowercase().as_str()) {
+        out.push(format!(
+            "the id does not start with the category {}",
+            t.category
+        ));
+    }
+    if t.name.is_empty() || t.nickname.is_empty() || t.subcategory.is_empty() {
+        out.push("the name, nickname or subcategory is empty".to_owned());
+    }
+    if !t.description.ends_with('.') || t.description.len() < 20 {
+        out.push("the description is missing or not a sentence".to_owned());
+    }
+    let template = t.variable_inputs.as_ref().map(|v| &v.template);
+    for (side, ports) in [("input", &t.inputs), ("output", &t.outputs)] {
+        let mut nicknames = HashSet::new();
+        for p in ports.iter().chain(template.filter(|_| side == "input")) {
+            if p.description.is_empty() {
+                out.push(format!("{side} {} has no doc", p.nickname));
+            }
+            if p.nickname.is_empty() || p.name.is_empty() {
+                out.push(format!("an {side} has no name or nickname"));
+            }
+            if let Some(d) = &p.default
+                && p.data_type != DataType::Generic
+                && d.data_type() != p.data_type
+            {
+                out.push(format!(
+                    "{side} {} of type {} has a default of type {}",
+                    p.nickname,
+                    p.data_type,
+                    d.data_type()
+                ));
+            }
+        }
+        for p in ports {
+            if !nicknames.insert(p.nickname.as_str()) {
+                out.push(format!("two {side}s are called {}", p.nickname));
+            }
+        }
+    }
+    for s in &t.settings {
+        if s.description.is_empty() {
+            out.push(format!("setting {} has no doc", s.name));
+        }
+    }
+    out
+}
+
+#[test]
+fn every_node_is_declared_completely() {
+    let registry = registry();
+    let mut report = Vec::new();
+    for t in registry.iter() {
+        for p in problems(t) {
+            report.push(format!("{}: {p}", t.id));
+        }
+    }
+    assert!(report.is_empty(), "{}", report.join("\n"));
+}
+
+#[test]
+fn the_checks_catch_a_bad_declaration() {
+    let bad = NodeType::new("Maths.Bad-Id", "Bad", "", "Maths")
+        .input(locus_runtime::Port::new("A", "A", DataType::Number).default_value(true))
+        .input(locus_runtime::Port::new("B", "A", DataType::Number));
+    let p = problems(&bad);
+    assert!(p.iter().any(|m| m.contains("not category.snake_name")));
+    assert!(p.iter().any(|m| m.contains("has no doc")));
+    assert!(p.iter().any(|m| m.contains("default of type Boolean")));
+    assert!(p.iter().any(|m| m.contains("two inputs are called A")));
+    assert!(p.iter().any(|m| m.contains("description")));
+}
+
+#[test]
+fn maths_and_params_ids_are_registered() {
+    use locus_nodes::{maths, params};
+    let registry = registry();
+    for id in [
+        maths::operators::ADDITION,
+        maths::operators::SUBTRACTION,
+        maths::operators::MULTIPLICATION,
+        maths::operators::DIVISION,
+        maths::operators::NEGATIVE,
+        maths::operators::ABSOLUTE,
+        maths::operators::POWER,
+        maths::operators::MODULUS,
+        maths::comparison::LARGER_THAN,
+        maths::comparison::SMALLER_THAN,
+        maths::comparison::EQUALITY,
+        maths::boolean::GATE_AND,
+        maths::boolean::GATE_OR,
+        maths::boolean::GATE_XOR,
+        maths::boolean::GATE_NAND,
+        maths::boolean::GATE_NOR,
+        maths::boolean::GATE_XNOR,
+        maths::boolean::GATE_NOT,
+        maths::domain::CONSTRUCT_DOMAIN,
+        maths::domain::DECONSTRUCT_DOMAIN,
+        maths::domain::REMAP_NUMBERS,
+        maths::sequence::RANGE,
+        maths::sequence::SERIES,
+        maths::script::EXPRESSION,
+        maths::script::EVALUATE,
+        params::primitive::NUMBER,
+        params::primitive::INTEGER,
+        params::primitive::BOOLEAN,
+        params::primitive::TEXT,
+        params::primitive::DOMAIN,
+    ] {
+        assert!(registry.get(id).is_some(), "{id} is not registered");
+    }
+}

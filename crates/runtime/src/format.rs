@@ -1,0 +1,707 @@
+//! Graph files: reading a [`Graph`] from RON text and writing it back in canonical layout.
+//!
+//! The layout is documented in `docs/graph-format.md`. Reading keeps the position of every
+//! id, port name and value (a [`Document`]) so that checking can point into the file.
+//! Writing is canonical: fixed field order, defaults left out, one node per line when it fits
+//! in 100 columns and one field per line otherwise, one wire, named input, named output and
+//! expected value per line. Reading a canonical file and writing it again gives the same bytes.
+
+use std::ops::Range;
+
+use crate::diagnostic::{Diagnostic, DiagnosticKind, Location};
+use crate::syntax::{self, Field, Kind, LineIndex, Node};
+use crate::{
+    FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Matching, Modifier, NodeId,
+    PortRef, Wire,
+};
+
+const GRAPH_FIELDS: &[&str] = &[
+    "format",
+    "name",
+    "description",
+    "nodes",
+    "wires",
+    "inputs",
+    "outputs",
+    "expected",
+];
+
+const NODE_FIELDS: &[&str] = &[
+    "id",
+    "type",
+    "inputs",
+    "values",
+    "settings",
+    "modifiers",
+    "matching",
+    "disabled",
+];
+
+/// A graph read from text, with the text and the position of everything in it.
+#[derive(Clone, Debug)]
+pub struct Document {
+    graph: Graph,
+    source: String,
+    lines: LineIndex,
+    pub(crate) map: SourceMap,
+}
+
+/// Byte spans of the parts of a graph file, parallel to the vectors of [`Graph`].
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SourceMap {
+    /// Per node.
+    pub nodes: Vec<NodeSpans>,
+    /// Per wire: the source and target strings.
+    pub wires: Vec<[Range<usize>; 2]>,
+    /// Per named input: the name and the target.
+    pub inputs: Vec<[Range<usize>; 2]>,
+    /// Per named output: the name and the source.
+    pub outputs: Vec<[Range<usize>; 2]>,
+    /// Per expected value: the output name and the value.
+    pub expected: Vec<[Range<usize>; 2]>,
+    /// The whole `expected: {…}` field, when present.
+    pub expected_field: Option<Range<usize>>,
+    /// The offset of the `)` that closes the graph.
+    pub graph_end: usize,
+}
+
+/// Byte spans of the parts of one node.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct NodeSpans {
+    /// The id string (the whole node when the id is missing).
+    pub id: Range<usize>,
+    /// The type string.
+    pub node_type: Range<usize>,
+    /// The variable input names.
+    pub input_names: Vec<Range<usize>>,
+    /// Per value: the port name and the value.
+    pub values: Vec<[Range<usize>; 2]>,
+    /// Per setting: the name and the value.
+    pub settings: Vec<[Range<usize>; 2]>,
+    /// Per modified port: the port name and each modifier.
+    pub modifiers: Vec<(Range<usize>, Vec<Range<usize>>)>,
+}
+
+impl Document {
+    /// Reads a graph file.
+    ///
+    /// # Errors
+    /// Every problem found: a RON syntax error (only the first, with its position), an
+    /// unsupported format version, or all the places where the RON is not a graph (unknown or
+    /// missing fields, values of the wrong kind).
+    pub fn parse(text: &str) -> Result<Self, Vec<Diagnostic>> {
+        let mut reader = Reader {
+            text,
+            lines: LineIndex::new(text),
+            errors: Vec::new(),
+        };
+        let root = match syntax::parse(text) {
+            Ok(root) => root,
+            Err(e) => {
+                let d = reader.diagnostic(
+                    DiagnosticKind::Syntax { message: e.message },
+                    e.offset..e.offset,
+                );
+                return Err(vec![d]);
+            }
+        };
+        let mut map = SourceMap::default();
+        let graph = reader.graph(&root, &mut map);
+        match graph {
+            Some(graph) if reader.errors.is_empty() => Ok(Self {
+                graph,
+                source: text.to_owned(),
+                lines: reader.lines,
+                map,
+            }),
+            _ => Err(reader.errors),
+        }
+    }
+
+    /// The graph.
+    pub fn graph(&self) -> &Graph {
+        &self.graph
+    }
+
+    /// The graph, consuming the document.
+    pub fn into_graph(self) -> Graph {
+        self.graph
+    }
+
+    /// The text the graph was read from.
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    /// The location of a byte offset in the source.
+    pub(crate) fn location(&self, offset: usize) -> Location {
+        location(&self.lines, &self.source, offset)
+    }
+
+    /// The source text with the `expected` section replaced by `expected` (added before the
+    /// end of the graph when absent, removed when `expected` is empty), keeping everything
+    /// else byte for byte, comments included. `locus test --bless` writes files this way.
+    pub fn with_expected(&self, expected: &[(String, Literal)]) -> String {
+        let mut section = String::new();
+        if !expected.is_empty() {
+            section.push_str("expected: ");
+            syntax::write_broken(&expected_node(expected), 4, &mut section);
+        }
+        let src = &self.source;
+        match &self.map.expected_field {
+            Some(span) => {
+                let mut end = span.end;
+                if section.is_empty() {
+                    // Remove the field with its comma and the rest of its line.
+                    let rest = &src[end..];
+                    let trimmed = rest.trim_start_matches([' ', '\t']);
+                    end += rest.len() - trimmed.len();
+                    if trimmed.starts_with(',') {
+                        end += 1;
+                    }
+                    let start = src[..span.start].trim_end_matches([' ', '\t']).len();
+                    let rest = &src[end..];
+                    let line_end = rest.find('\n').map_or(rest.len(), |i| i + 1);
+                    if rest[..line_end].trim().is_empty() {
+                        end += line_end;
+                    }
+                    return format!("{}{}", &src[..start], &src[end..]);
+                }
+                format!("{}{}{}", &src[..span.start], section, &src[end..])
+            }
+            None if section.is_empty() => src.clone(),
+            None => {
+                let end = self.map.graph_end.min(src.len());
+                let before = src[..end].trim_end();
+                let comma = if before.ends_with(',') || before.ends_with('(') {
+                    ""
+                } else {
+                    ","
+                };
+                format!("{before}{comma}\n    {section},\n{}", &src[end..])
+            }
+        }
+    }
+}
+
+impl Graph {
+    /// Reads a graph from RON text (see [`Document::parse`] to keep positions for checking).
+    ///
+    /// # Errors
+    /// See [`Document::parse`].
+    pub fn from_ron(text: &str) -> Result<Self, Vec<Diagnostic>> {
+        Document::parse(text).map(Document::into_graph)
+    }
+
+    /// The graph as canonical RON text, ending with a newline.
+    ///
+    /// Literal values that are not valid RON are written as they are (the file then fails to
+    /// load, pointing at them). The format version written is always [`FORMAT_VERSION`].
+    pub fn to_ron(&self) -> String {
+        write_graph(self)
+    }
+}
+
+/// The 1-based line and column of a byte offset.
+fn location(lines: &LineIndex, text: &str, offset: usize) -> Location {
+    let (line, column) = lines.line_column(text, offset);
+    Location {
+        line,
+        column,
+        offset,
+    }
+}
+
+struct Reader<'a> {
+    text: &'a str,
+    lines: LineIndex,
+    errors: Vec<Diagnostic>,
+}
+
+impl Reader<'_> {
+    fn diagnostic(&self, kind: DiagnosticKind, span: Range<usize>) -> Diagnostic {
+        let mut d = Diagnostic::error(kind);
+        d.location = Some(location(&self.lines, self.text, span.start));
+        d
+    }
+
+    fn malformed(&mut self, span: Range<usize>, message: String) {
+        let d = self.diagnostic(DiagnosticKind::Malformed { message }, span);
+        self.errors.push(d);
+    }
+
+    fn expect_kind(&mut self, node: &Node, what: &str, context: &str) {
+        self.malformed(
+            node.span.clone(),
+            format!("expected {what} for {context}, found {}", node.describe()),
+        );
+    }
+
+    /// The fields of a struct, after reporting unknown and duplicate ones.
+    fn fields<'n>(
+        &mut self,
+        node: &'n Node,
+        names: &[&str],
+        struct_name: &str,
+        context: &str,
+    ) -> Option<&'n [Field]> {
+        let fields = match &node.kind {
+            Kind::Struct(None, fields) => fields.as_slice(),
+            Kind::Struct(Some(n), fields) if n == struct_name => fields.as_slice(),
+            Kind::Tuple(None, v) if v.is_empty() => &[],
+            _ => {
+                self.expect_kind(node, "a struct `(field: value, …)`", context);
+                return None;
+            }
+        };
+        for (i, f) in fields.iter().enumerate() {
+            if !names.contains(&f.name.as_str()) {
+                self.malformed(
+                    f.name_span.clone(),
+                    format!(
+                        "unknown field `{}` in {context} (fields: {})",
+                        f.name,
+                        names.join(", ")
+                    ),
+                );
+            } else if fields[..i].iter().any(|g| g.name == f.name) {
+                self.malformed(
+                    f.name_span.clone(),
+                    format!("duplicate field `{}` in {context}", f.name),
+                );
+            }
+        }
+        Some(fields)
+    }
+
+    fn string(&mut self, node: &Node, context: &str) -> Option<String> {
+        match &node.kind {
+            Kind::Str(s) => Some(s.clone()),
+            _ => {
+                self.expect_kind(node, "a string in quotes", context);
+                None
+            }
+        }
+    }
+
+    fn graph(&mut self, root: &Node, map: &mut SourceMap) -> Option<Graph> {
+        map.graph_end = root.span.end.saturating_sub(1);
+        let fields = self.fields(root, GRAPH_FIELDS, "Graph", "the graph")?;
+        let field = |name: &str| fields.iter().find(|f| f.name == name);
+        // The version decides how the rest is read, so a wrong one stops here.
+        let Some(format) = field("format") else {
+            self.malformed(
+                root.span.start..root.span.start,
+                format!("missing field `format` in the graph (this build writes format {FORMAT_VERSION})"),
+            );
+            return None;
+        };
+        let version = match &format.value.kind {
+            Kind::Number(n) => n.parse::<u32>().ok(),
+            _ => None,
+        };
+        if version != Some(FORMAT_VERSION) {
+            let d = self.diagnostic(
+                DiagnosticKind::UnsupportedVersion {
+                    found: format.value.describe(),
+                },
+                format.value.span.clone(),
+            );
+            self.errors = vec![d];
+            return None;
+        }
+        let mut graph = Graph {
+            format: FORMAT_VERSION,
+            ..Graph::default()
+        };
+        for f in fields {
+            let v = &f.value;
+            match f.name.as_str() {
+                "name" => graph.name = self.string(v, "`name`").unwrap_or_default(),
+                "description" => {
+                    graph.description = self.string(v, "`description`").unwrap_or_default();
+                }
+                "nodes" => {
+                    for item in self.list(v, "`nodes`") {
+                        let (node, spans) = self.node(item);
+                        graph.nodes.push(node);
+                        map.nodes.push(spans);
+                    }
+                }
+                "wires" => {
+                    for item in self.list(v, "`wires`") {
+                        if let Some((wire, spans)) = self.wire(item) {
+                            graph.wires.push(wire);
+                            map.wires.push(spans);
+                        }
+                    }
+                }
+                "inputs" => {
+                    for (key, value) in self.map(v, "named `inputs`") {
+                        let name = self.string(key, "a named input").unwrap_or_default();
+                        let context = format!("named input \"{name}\"");
+                        if let Some(target) = self.port_ref(value, &context) {
+                            graph.inputs.push(GraphInput { name, target });
+                            map.inputs.push([key.span.clone(), value.span.clone()]);
+                        }
+                    }
+                }
+                "outputs" => {
+                    for (key, value) in self.map(v, "named `outputs`") {
+                        let name = self.string(key, "a named output").unwrap_or_default();
+                        let context = format!("named output \"{name}\"");
+                        if let Some(source) = self.port_ref(value, &context) {
+                            graph.outputs.push(GraphOutput { name, source });
+                            map.outputs.push([key.span.clone(), value.span.clone()]);
+                        }
+                    }
+                }
+                "expected" => {
+                    map.expected_field = Some(f.name_span.start..v.span.end);
+                    for (key, value) in self.map(v, "`expected`") {
+                        let name = self.string(key, "an expected output").unwrap_or_default();
+                        graph.expected.push((name, Literal(value.to_compact())));
+                        map.expected.push([key.span.clone(), value.span.clone()]);
+                    }
+                }
+                _ => {}
+            }
+        }
+        Some(graph)
+    }
+
+    fn list<'n>(&mut self, node: &'n Node, context: &str) -> &'n [Node] {
+        match &node.kind {
+            Kind::List(items) => items,
+            _ => {
+                self.expect_kind(node, "a list `[…]`", context);
+                &[]
+            }
+        }
+    }
+
+    fn map<'n>(&mut self, node: &'n Node, context: &str) -> &'n [(Node, Node)] {
+        match &node.kind {
+            Kind::Map(entries) => entries,
+            _ => {
+                self.expect_kind(node, "a map `{…}`", context);
+                &[]
+            }
+        }
+    }
+
+    fn node(&mut self, item: &Node) -> (GraphNode, NodeSpans) {
+        let mut node = GraphNode::default();
+        let mut spans = NodeSpans {
+            id: item.span.clone(),
+            node_type: item.span.clone(),
+            ..NodeSpans::default()
+        };
+        let Some(fields) = self.fields(item, NODE_FIELDS, "Node", "a node") else {
+            return (node, spans);
+        };
+        let id = fields.iter().find(|f| f.name == "id");
+        let context = match id.map(|f| &f.value.kind) {
+            Some(Kind::Str(id)) => format!("node \"{id}\""),
+            _ => "a node".to_owned(),
+        };
+        for missing in ["id", "type"] {
+            if !fields.iter().any(|f| f.name == missing) {
+                self.malformed(
+                    item.span.start..item.span.start,
+                    format!("missing field `{missing}` in {context}"),
+                );
+            }
+        }
+        for f in fields {
+            let v = &f.value;
+            match f.name.as_str() {
+                "id" => {
+                    node.id = NodeId(self.string(v, "`id`").unwrap_or_default());
+                    spans.id = v.span.clone();
+                }
+                "type" => {
+                    node.node_type = self.string(v, "`type`").unwrap_or_default();
+                    spans.node_type = v.span.clone();
+                }
+                "inputs" => {
+                    let mut names = Vec::new();
+                    for name in self.list(v, &format!("`inputs` of {context}")) {
+                        if let Some(s) = self.string(name, "an input name") {
+                            names.push(s);
+                            spans.input_names.push(name.span.clone());
+                        }
+                    }
+                    node.input_names = Some(names);
+                }
+                "values" | "settings" => {
+                    let what = if f.name == "values" {
+                        "an input name"
+                    } else {
+                        "a setting name"
+                    };
+                    let mut entries = Vec::new();
+                    let mut entry_spans = Vec::new();
+                    for (key, value) in self.map(v, &format!("`{}` of {context}", f.name)) {
+                        if let Some(name) = self.string(key, what) {
+                            entries.push((name, Literal(value.to_compact())));
+                            entry_spans.push([key.span.clone(), value.span.clone()]);
+                        }
+                    }
+                    if f.name == "values" {
+                        node.values = entries;
+                        spans.values = entry_spans;
+                    } else {
+                        node.settings = entries;
+                        spans.settings = entry_spans;
+                    }
+                }
+                "modifiers" => {
+                    for (key, value) in self.map(v, &format!("`modifiers` of {context}")) {
+                        let Some(port) = self.string(key, "an input name") else {
+                            continue;
+                        };
+                        let (list, list_spans) = self.modifiers(value);
+                        node.modifiers.push((port, list));
+                        spans.modifiers.push((key.span.clone(), list_spans));
+                    }
+                }
+                "matching" => {
+                    node.matching = match &v.kind {
+                        Kind::Ident(m) if m == "longest" => Matching::Longest,
+                        Kind::Ident(m) if m == "shortest" => Matching::Shortest,
+                        Kind::Ident(m) if m == "cross" => Matching::Cross,
+                        _ => {
+                            self.expect_kind(v, "longest, shortest or cross", "`matching`");
+                            Matching::Longest
+                        }
+                    }
+                }
+                "disabled" => match v.kind {
+                    Kind::Bool(b) => node.disabled = b,
+                    _ => self.expect_kind(v, "true or false", "`disabled`"),
+                },
+                _ => {}
+            }
+        }
+        (node, spans)
+    }
+
+    fn modifiers(&mut self, value: &Node) -> (Vec<Modifier>, Vec<Range<usize>>) {
+        let mut list = Vec::new();
+        let mut spans = Vec::new();
+        for m in self.list(value, "modifiers") {
+            let parsed = match &m.kind {
+                Kind::Ident(name) => Modifier::from_name(name),
+                _ => None,
+            };
+            match parsed {
+                Some(modifier) if list.contains(&modifier) => self.malformed(
+                    m.span.clone(),
+                    format!("duplicate modifier {}", modifier.name()),
+                ),
+                Some(modifier) => {
+                    list.push(modifier);
+                    spans.push(m.span.clone());
+                }
+                None => {
+                    let names: Vec<&str> = Modifier::ALL.iter().map(|m| m.name()).collect();
+                    self.malformed(
+                        m.span.clone(),
+                        format!(
+                            "unknown modifier {} (modifiers: {})",
+                            m.describe(),
+                            names.join(", ")
+                        ),
+                    );
+                }
+            }
+        }
+        (list, spans)
+    }
+
+    fn wire(&mut self, item: &Node) -> Option<(Wire, [Range<usize>; 2])> {
+        match &item.kind {
+            Kind::Tuple(None, ends) if ends.len() == 2 => {
+                let from = self.port_ref(&ends[0], "a wire");
+                let to = self.port_ref(&ends[1], "a wire");
+                Some((
+                    Wire {
+                        from: from?,
+                        to: to?,
+                    },
+                    [ends[0].span.clone(), ends[1].span.clone()],
+                ))
+            }
+            _ => {
+                self.expect_kind(item, "a wire (\"node.port\", \"node.port\")", "`wires`");
+                None
+            }
+        }
+    }
+
+    fn port_ref(&mut self, node: &Node, context: &str) -> Option<PortRef> {
+        let text = self.string(node, context)?;
+        match text.split_once('.') {
+            Some((n, p)) if !n.is_empty() && !p.is_empty() => Some(PortRef {
+                node: NodeId(n.to_owned()),
+                port: p.to_owned(),
+            }),
+            _ => {
+                let d = self.diagnostic(
+                    DiagnosticKind::BadPortRef {
+                        context: context.to_owned(),
+                        text,
+                    },
+                    node.span.clone(),
+                );
+                self.errors.push(d);
+                None
+            }
+        }
+    }
+}
+
+fn string_node(s: &str) -> Node {
+    Node::new(Kind::Str(s.to_owned()))
+}
+
+/// A literal's syntax for writing; text that is not valid RON is kept raw.
+fn literal_node(literal: &Literal) -> Node {
+    syntax::parse(&literal.0).unwrap_or_else(|_| Node::new(Kind::Raw(literal.0.clone())))
+}
+
+fn field(name: &str, value: Node) -> Field {
+    Field {
+        name: name.to_owned(),
+        name_span: 0..0,
+        value,
+    }
+}
+
+fn literal_map(entries: &[(String, Literal)]) -> Node {
+    Node::new(Kind::Map(
+        entries
+            .iter()
+            .map(|(k, v)| (string_node(k), literal_node(v)))
+            .collect(),
+    ))
+}
+
+fn expected_node(expected: &[(String, Literal)]) -> Node {
+    literal_map(expected)
+}
+
+fn node_node(node: &GraphNode) -> Node {
+    let mut fields = vec![
+        field("id", string_node(&node.id.0)),
+        field("type", string_node(&node.node_type)),
+    ];
+    if let Some(names) = &node.input_names {
+        let names = names.iter().map(|n| string_node(n)).collect();
+        fields.push(field("inputs", Node::new(Kind::List(names))));
+    }
+    if !node.values.is_empty() {
+        fields.push(field("values", literal_map(&node.values)));
+    }
+    if !node.settings.is_empty() {
+        fields.push(field("settings", literal_map(&node.settings)));
+    }
+    if !node.modifiers.is_empty() {
+        let entries = node
+            .modifiers
+            .iter()
+            .map(|(port, list)| {
+                let names = list
+                    .iter()
+                    .map(|m| Node::new(Kind::Ident(m.name().to_owned())))
+                    .collect();
+                (string_node(port), Node::new(Kind::List(names)))
+            })
+            .collect();
+        fields.push(field("modifiers", Node::new(Kind::Map(entries))));
+    }
+    match node.matching {
+        Matching::Longest => {}
+        Matching::Shortest => fields.push(field("matching", ident("shortest"))),
+        Matching::Cross => fields.push(field("matching", ident("cross"))),
+    }
+    if node.disabled {
+        fields.push(field("disabled", Node::new(Kind::Bool(true))));
+    }
+    Node::new(Kind::Struct(None, fields))
+}
+
+fn ident(name: &str) -> Node {
+    Node::new(Kind::Ident(name.to_owned()))
+}
+
+/// Writes a graph in canonical layout (see the module docs).
+pub fn write_graph(graph: &Graph) -> String {
+    let mut out = String::from("(\n");
+    let scalar = |out: &mut String, name: &str, value: Node| {
+        let prefix = format!("    {name}: ");
+        out.push_str(&prefix);
+        syntax::write_pretty(&value, 4, prefix.len() - 4, 1, out);
+        out.push_str(",\n");
+    };
+    scalar(
+        &mut out,
+        "format",
+        Node::new(Kind::Number(FORMAT_VERSION.to_string())),
+    );
+    if !graph.name.is_empty() {
+        scalar(&mut out, "name", string_node(&graph.name));
+    }
+    if !graph.description.is_empty() {
+        scalar(&mut out, "description", string_node(&graph.description));
+    }
+    let section = |out: &mut String, name: &str, value: Node| {
+        out.push_str("    ");
+        out.push_str(name);
+        out.push_str(": ");
+        syntax::write_broken(&value, 4, out);
+        out.push_str(",\n");
+    };
+    if !graph.nodes.is_empty() {
+        let nodes = graph.nodes.iter().map(node_node).collect();
+        section(&mut out, "nodes", Node::new(Kind::List(nodes)));
+    }
+    if !graph.wires.is_empty() {
+        let wires = graph
+            .wires
+            .iter()
+            .map(|w| {
+                Node::new(Kind::Tuple(
+                    None,
+                    vec![
+                        string_node(&w.from.to_string()),
+                        string_node(&w.to.to_string()),
+                    ],
+                ))
+            })
+            .collect();
+        section(&mut out, "wires", Node::new(Kind::List(wires)));
+    }
+    if !graph.inputs.is_empty() {
+        let entries = graph
+            .inputs
+            .iter()
+            .map(|i| (string_node(&i.name), string_node(&i.target.to_string())))
+            .collect();
+        section(&mut out, "inputs", Node::new(Kind::Map(entries)));
+    }
+    if !graph.outputs.is_empty() {
+        let entries = graph
+            .outputs
+            .iter()
+            .map(|o| (string_node(&o.name), string_node(&o.source.to_string())))
+            .collect();
+        section(&mut out, "outputs", Node::new(Kind::Map(entries)));
+    }
+    if !graph.expected.is_empty() {
+        section(&mut out, "expected", expected_node(&graph.expected));
+    }
+    out.push_str(")\n");
+    out
+}
