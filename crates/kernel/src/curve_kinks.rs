@@ -45,7 +45,7 @@ impl Curve {
                 Ok(polyline.segment(i).unit_direction())
             }
             Self::Nurbs(c) => {
-                if !c.knots().contains(&t) || t == d.t1 {
+                if t == d.t1 || !self.is_break(t) {
                     // Away from knots (and at the end, which is evaluated from the left) the two
                     // sides agree.
                     return Ok(c.tangent_at(t));
@@ -63,16 +63,41 @@ impl Curve {
     /// # Errors
     /// [`Error::NotFinite`] for a NaN or infinite `t`.
     pub fn kink_angle_at(&self, t: f64) -> Result<Option<f64>> {
-        let incoming = self.tangent_from_left(t)?;
-        let d = self.domain();
-        if t <= d.t0 || t >= d.t1 {
-            return Ok(incoming.map(|_| 0.0));
+        Ok(self.tangent_and_kink_angle_at(t)?.1)
+    }
+
+    /// The outgoing unit tangent ([`Curve::tangent_at`]) and the kink angle
+    /// ([`Curve::kink_angle_at`]) at `t`, evaluating the incoming tangent only at a polyline
+    /// vertex or a NURBS knot, where the two can differ.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for a NaN or infinite `t`.
+    pub fn tangent_and_kink_angle_at(&self, t: f64) -> Result<(Option<Vector3>, Option<f64>)> {
+        if !t.is_finite() {
+            return Err(Error::NotFinite { what: "parameter" });
         }
         let outgoing = self.tangent_at(t);
-        Ok(match (incoming, outgoing) {
+        let d = self.domain();
+        if t <= d.t0 || t >= d.t1 || !self.is_break(t) {
+            return Ok((outgoing, outgoing.map(|_| 0.0)));
+        }
+        let angle = match (self.tangent_from_left(t)?, outgoing) {
             (Some(a), Some(b)) => Some(a.cross(b).length().atan2(a.dot(b))),
             _ => None,
-        })
+        };
+        Ok((outgoing, angle))
+    }
+
+    /// Whether `t` is a place where the curve may kink: a polyline vertex or a NURBS knot.
+    fn is_break(&self, t: f64) -> bool {
+        match self {
+            Self::Line { .. } | Self::Circle { .. } | Self::Arc { .. } => false,
+            Self::Polyline { .. } => {
+                let s = self.parameter_map().expect("polyline").to_natural(t);
+                s == s.floor()
+            }
+            Self::Nurbs(c) => c.knots().binary_search_by(|k| k.total_cmp(&t)).is_ok(),
+        }
     }
 
     /// The parameters strictly inside the domain where the angle between the incoming and the

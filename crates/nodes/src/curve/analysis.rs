@@ -129,7 +129,7 @@ pub fn evaluate_curve() -> NodeType {
             let curve = curve_input(s, 0)?;
             let t = parameter_on(s, 1, &curve)?;
             s.set(0, curve.point_at(t));
-            match (curve.tangent_at(t), curve.kink_angle_at(t)?) {
+            match curve.tangent_and_kink_angle_at(t)? {
                 (Some(tangent), Some(angle)) => {
                     s.set(1, tangent);
                     s.set(2, angle);

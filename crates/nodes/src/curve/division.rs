@@ -141,7 +141,8 @@ pub fn shatter() -> NodeType {
              closed curve the seam is not a cut: k cuts give k pieces, the last one running \
              from the last cut across the seam to the first (its domain continues past the \
              end). Pieces keep their parameters, and the kind of their curve where possible \
-             (pieces of lines are lines, of circles and arcs arcs, of polylines polylines).",
+             (pieces of lines are lines, of circles and arcs arcs, of polylines polylines when cut at
+             vertices).",
         )
         .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to cut."))
         .input(
