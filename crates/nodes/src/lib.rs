@@ -10,6 +10,7 @@
 //! - Primitive ([`params::primitive`]): Number \[Num\], Integer \[Int\], Boolean \[Bool\],
 //!   Text \[Txt\], Domain.
 //! - Geometry ([`params::geometry`]): Point \[Pt\], Vector \[Vec\], Plane \[Pln\].
+//! - Curve ([`params::curve`]): Curve \[Crv\].
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -41,7 +42,19 @@
 //! - Util ([`transform::util`]): Transform, Compound \[Comp\], Inverse Transform \[Inverse\],
 //!   Deconstruct Transform \[DeXform\], Construct Transform \[Xform\]; all geometry goes
 //!   through [`transform::apply::transform_value`].
+//! **Curve** ([`curve`])
+//! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc.
+//! - Spline ([`curve::spline`]): PolyLine \[PLine\], Bezier Span \[BzSpan\], Nurbs Curve
+//!   \[Nurbs\], Nurbs Curve PWK \[NurbCrv\], Interpolate \[IntCrv\], Knot Vector \[Knots\].
+//! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,
+//!   Curve Domain \[CrvDom\], End Points \[End\], Length \[Len\], Evaluate Length \[Eval\],
+//!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\].
+//! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
+//!   Shatter.
+//! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
+//! - The Curve parameter \[Crv\] is in [`params::curve`].
 
+pub mod curve;
 pub mod expression;
 pub mod maths;
 pub mod params;
@@ -56,4 +69,5 @@ pub fn register(registry: &mut NodeRegistry) {
     maths::register(registry);
     vector::register(registry);
     transform::register(registry);
+    curve::register(registry);
 }

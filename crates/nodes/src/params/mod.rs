@@ -6,6 +6,7 @@
 //! branches and nulls pass through unchanged; every item is cast to the parameter's type on
 //! the way in (a failed cast is an error naming the item, which becomes null).
 
+pub mod curve;
 pub mod geometry;
 pub mod primitive;
 
@@ -15,4 +16,5 @@ use locus_runtime::NodeRegistry;
 pub fn register(registry: &mut NodeRegistry) {
     primitive::register(registry);
     geometry::register(registry);
+    curve::register(registry);
 }

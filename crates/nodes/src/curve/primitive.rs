@@ -1,0 +1,229 @@
+//! Curve › Primitive: Line, Circle and Arc.
+
+use std::f64::consts::PI;
+
+use locus_kernel::{Arc, Circle, Interval, Line, Plane, Point3};
+use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+
+/// Id of [`line`].
+pub const LINE: &str = "curve.line";
+/// Id of [`circle`].
+pub const CIRCLE: &str = "curve.circle";
+/// Id of [`arc`].
+pub const ARC: &str = "curve.arc";
+
+/// Registers the primitive nodes.
+pub fn register(registry: &mut NodeRegistry) {
+    for t in [line(), circle(), arc()] {
+        registry.register(t);
+    }
+}
+
+fn primitive(id: &str, name: &str, nickname: &str) -> NodeType {
+    NodeType::new(id, name, nickname, "Curve").subcategory("Primitive")
+}
+
+/// Line \[Ln\]: the segment between two points.
+pub fn line() -> NodeType {
+    primitive(LINE, "Line", "Ln")
+        .description(
+            "Creates the line segment from a start point to an end point. As a curve its domain \
+             is 0 to its length.",
+        )
+        .input(Port::new("Start Point", "A", DataType::Point).doc("Line start point."))
+        .input(Port::new("End Point", "B", DataType::Point).doc("Line end point."))
+        .output(Port::new("Line", "L", DataType::Line).doc("The line segment from A to B."))
+        .solve(|s| {
+            let a: Point3 = *s.item(0)?;
+            let b: Point3 = *s.item(1)?;
+            if !a.is_finite() || !b.is_finite() {
+                return Err("line end points must be finite".into());
+            }
+            if a == b {
+                return Err("start and end points coincide: the line has no length".into());
+            }
+            s.set(0, Line::new(a, b));
+            Ok(())
+        })
+}
+
+/// Circle \[Cir\]: a circle from its plane and radius.
+pub fn circle() -> NodeType {
+    primitive(CIRCLE, "Circle", "Cir")
+        .description(
+            "Creates the circle about the origin of a plane, in that plane. It starts on the \
+             plane's x axis and turns towards its y axis; its domain is 0 to 2π.",
+        )
+        .input(
+            Port::new("Plane", "P", DataType::Plane)
+                .doc("Base plane of the circle; its origin is the centre. Default World XY.")
+                .default_value(Plane::WORLD_XY),
+        )
+        .input(
+            Port::new("Radius", "R", DataType::Number)
+                .doc("Radius of the circle, in model units, positive. Default 1.")
+                .default_value(1.0),
+        )
+        .output(Port::new("Circle", "C", DataType::Circle).doc("The circle."))
+        .solve(|s| {
+            let plane: Plane = *s.item(0)?;
+            let radius: f64 = *s.item(1)?;
+            s.set(0, Circle::new(plane, radius)?);
+            Ok(())
+        })
+}
+
+/// Arc \[Arc\]: an arc from a plane, a radius and an angle domain.
+pub fn arc() -> NodeType {
+    primitive(ARC, "Arc", "Arc")
+        .description(
+            "Creates the arc of the circle about the origin of a plane between two angles, \
+             measured in radians from the plane's x axis towards its y axis. A decreasing angle \
+             domain runs the other way round: the arc then lies on the plane with its normal \
+             reversed, between the negated angles, as in Grasshopper. The arc's domain is its \
+             angle interval.",
+        )
+        .input(
+            Port::new("Plane", "P", DataType::Plane)
+                .doc("Base plane of the arc; its origin is the centre. Default World XY.")
+                .default_value(Plane::WORLD_XY),
+        )
+        .input(
+            Port::new("Radius", "R", DataType::Number)
+                .doc("Radius of the arc, in model units, positive. Default 1.")
+                .default_value(1.0),
+        )
+        .input(
+            Port::new("Angle", "A", DataType::Domain)
+                .doc(
+                    "Angle domain in radians; its length is at most 2π and not zero. \
+                     Default 0 to π.",
+                )
+                .default_value(Interval::new(0.0, PI)),
+        )
+        .output(Port::new("Arc", "A", DataType::Arc).doc("The arc."))
+        .output(Port::new("Length", "L", DataType::Number).doc("Length of the arc."))
+        .solve(|s| {
+            let plane: Plane = *s.item(0)?;
+            let radius: f64 = *s.item(1)?;
+            let angle: Interval = *s.item(2)?;
+            let (plane, angle) = if angle.t0 > angle.t1 {
+                let reversed = Plane {
+                    origin: plane.origin,
+                    x_axis: plane.x_axis,
+                    y_axis: -plane.y_axis,
+                    z_axis: -plane.z_axis,
+                };
+                (reversed, Interval::new(-angle.t0, -angle.t1))
+            } else {
+                (plane, angle)
+            };
+            let arc = Arc::new(Circle::new(plane, radius)?, angle)?;
+            s.set(0, arc);
+            s.set(1, arc.length());
+            Ok(())
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::f64::consts::FRAC_PI_2;
+
+    use locus_kernel::{Curve, Vector3};
+    use locus_runtime::{DataTree, NodeCall, Value};
+
+    use super::*;
+    use crate::curve::test_support::*;
+
+    #[test]
+    fn line_between_two_points() {
+        let r = NodeCall::new(&line())
+            .input(DataTree::from_item(Point3::new(1.0, 2.0, 3.0)))
+            .input(DataTree::from_list(vec![
+                Point3::new(4.0, 6.0, 3.0),
+                Point3::new(1.0, 2.0, 3.0),
+                Point3::new(f64::NAN, 0.0, 0.0),
+            ]))
+            .run();
+        let out = values(&r.outputs[0]);
+        let Some(Value::Line(l)) = &out[0] else {
+            panic!("{out:?}")
+        };
+        assert_eq!(l.length(), 5.0);
+        assert_eq!(Curve::from(*l).domain(), Interval::new(0.0, 5.0));
+        assert_eq!(out[1], None);
+        assert_eq!(out[2], None);
+        let errors = messages(&r, locus_runtime::Level::Error);
+        assert_eq!(errors.len(), 2);
+        assert!(errors[0].contains("coincide"), "{errors:?}");
+        assert!(errors[1].contains("finite"), "{errors:?}");
+    }
+
+    #[test]
+    fn circle_defaults_and_bad_radius() {
+        let r = NodeCall::new(&circle()).run();
+        let out = values(&r.outputs[0]);
+        assert_eq!(
+            out,
+            vec![Some(Value::Circle(
+                Circle::new(Plane::WORLD_XY, 1.0).unwrap()
+            ))]
+        );
+        for bad in [0.0, -2.0, f64::NAN] {
+            let r = NodeCall::new(&circle())
+                .skip_input()
+                .input(DataTree::from_item(bad))
+                .run();
+            assert_eq!(values(&r.outputs[0]), vec![None]);
+            let e = single_error(&r);
+            assert!(e.contains("radius") || e.contains("finite"), "{e}");
+        }
+    }
+
+    #[test]
+    fn arc_defaults_to_a_half_circle() {
+        let r = NodeCall::new(&arc()).run();
+        let Some(Value::Arc(a)) = values(&r.outputs[0])[0].clone() else {
+            panic!()
+        };
+        assert_eq!(a.angle, Interval::new(0.0, PI));
+        assert_eq!(numbers(&r.outputs[1]), vec![PI]);
+        assert!(close(a.end_point(), Point3::new(-1.0, 0.0, 0.0), 1e-15));
+    }
+
+    #[test]
+    fn decreasing_angles_run_clockwise() {
+        let r = NodeCall::new(&arc())
+            .skip_input()
+            .input(DataTree::from_item(2.0))
+            .input(DataTree::from_item(Interval::new(FRAC_PI_2, 0.0)))
+            .run();
+        let Some(Value::Arc(a)) = values(&r.outputs[0])[0].clone() else {
+            panic!("{:?}", r.messages)
+        };
+        // From (0, 2) clockwise to (2, 0), through the first quadrant.
+        assert!(close(a.start_point(), Point3::new(0.0, 2.0, 0.0), 1e-15));
+        assert!(close(a.end_point(), Point3::new(2.0, 0.0, 0.0), 1e-15));
+        let mid = a.mid_point();
+        assert!(mid.x > 0.0 && mid.y > 0.0);
+        assert_eq!(a.circle.normal(), Vector3::new(0.0, 0.0, -1.0));
+        assert!((numbers(&r.outputs[1])[0] - PI).abs() < 1e-15);
+    }
+
+    #[test]
+    fn arc_rejects_empty_and_overlong_angles() {
+        for bad in [
+            Interval::new(1.0, 1.0),
+            Interval::new(0.0, 7.0),
+            Interval::new(f64::NAN, 1.0),
+        ] {
+            let r = NodeCall::new(&arc())
+                .skip_input()
+                .skip_input()
+                .input(DataTree::from_item(bad))
+                .run();
+            assert_eq!(values(&r.outputs[0]), vec![None]);
+            single_error(&r);
+        }
+    }
+}
