@@ -1,3 +1,153 @@
-//! The `locus` command.
+//! The `locus` command: run, check and test node graphs from the command line.
+//!
+//! Exit codes (also in `docs/cli.md`): 0 success; 1 a node reported an error while running;
+//! 2 the command line is wrong (unknown option, bad `--set` value, unknown input or node);
+//! 3 a graph could not be read or failed checking; 4 `locus test` found failing graphs.
 
-fn main() {}
+/// Prints a line to stdout; a closed stdout (`locus nodes | head`) ends the program quietly.
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        if writeln!(std::io::stdout(), $($arg)*).is_err() {
+            std::process::exit(0);
+        }
+    }};
+}
+
+/// Prints to stdout without a newline; see `out!`.
+macro_rules! out_str {
+    ($text:expr) => {{
+        use std::io::Write as _;
+        if write!(std::io::stdout(), "{}", $text).is_err() {
+            std::process::exit(0);
+        }
+    }};
+}
+
+mod catalog;
+mod graph_file;
+mod render;
+mod test_graphs;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+/// Exit code: a node reported an error while running.
+const EXIT_RUNTIME_ERROR: u8 = 1;
+/// Exit code: the command line is wrong.
+const EXIT_USAGE: u8 = 2;
+/// Exit code: a graph could not be read or failed checking.
+const EXIT_BAD_GRAPH: u8 = 3;
+/// Exit code: at least one graph failed its test.
+const EXIT_TEST_FAILED: u8 = 4;
+
+/// locus: a headless node-graph engine for computational design, with Grasshopper's semantics.
+#[derive(Debug, Parser)]
+#[command(name = "locus", version, about, max_term_width = 100)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// How `locus run` prints results.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    /// Trees in Grasshopper notation, one item per line.
+    Text,
+    /// One JSON object (see docs/json-output.md).
+    Json,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Evaluate a graph and print its named outputs and every runtime message.
+    Run {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// Give a named input a value written as in the graph file: `--set t=0.3`,
+        /// `--set A='(1,2,3)'`, `--set N='[1, 2, 3]'`.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Number of threads (default: one per core; 1 runs everything on one thread).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+    },
+    /// Check a graph and print every problem with file:line:column, node and port.
+    Check {
+        /// The graph files.
+        #[arg(required = true)]
+        graphs: Vec<PathBuf>,
+    },
+    /// Run graphs that carry expected outputs and report pass or fail per graph.
+    Test {
+        /// Graph files or folders (searched for .ron files); default `graphs/`.
+        paths: Vec<PathBuf>,
+        /// Write the current outputs into the graphs as their new expectations.
+        #[arg(long)]
+        bless: bool,
+        /// Number of threads.
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+    },
+    /// List the node catalogue, optionally one category.
+    Nodes {
+        /// A category such as `Vector` (case-insensitive).
+        category: Option<String>,
+    },
+    /// Show a node type's ports, types, access, defaults and documentation.
+    Describe {
+        /// The node type's id (`vector.dot_product`), name or nickname.
+        node: String,
+    },
+    /// Print a graph in Graphviz DOT.
+    Dot {
+        /// The graph file.
+        graph: PathBuf,
+    },
+}
+
+fn main() -> ExitCode {
+    // A panic is a bug in locus: say so in plain words, without a backtrace.
+    std::panic::set_hook(Box::new(|info| {
+        let location = info
+            .location()
+            .map(|l| format!(" at {}:{}", l.file(), l.line()))
+            .unwrap_or_default();
+        eprintln!("locus: internal error{location}; please report it");
+    }));
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() {
+                ExitCode::from(EXIT_USAGE)
+            } else {
+                ExitCode::SUCCESS
+            };
+        }
+    };
+    let registry = catalog::registry();
+    let code = match cli.command {
+        Command::Run {
+            graph,
+            set,
+            format,
+            threads,
+        } => graph_file::run(&registry, &graph, &set, format == Format::Json, threads),
+        Command::Check { graphs } => graph_file::check(&registry, &graphs),
+        Command::Test {
+            paths,
+            bless,
+            threads,
+        } => test_graphs::test(&registry, &paths, bless, threads),
+        Command::Nodes { category } => catalog::list(&registry, category.as_deref()),
+        Command::Describe { node } => catalog::describe(&registry, &node),
+        Command::Dot { graph } => graph_file::dot(&registry, &graph),
+    };
+    ExitCode::from(code)
+}

@@ -4,69 +4,13 @@
 
 use std::fmt::Write as _;
 
-use locus_kernel::{Plane, Point3, Vector3};
-use locus_runtime::{DataTree, Message, Value};
+use locus_kernel::{Plane, Point3};
+use locus_runtime::{DataTree, Message, Value, format_value};
 use serde_json::{Map, Value as Json, json};
 
-/// A number as text: the shortest form that reads back to the same `f64`, `-0` printed as `0`.
-pub fn format_number(x: f64) -> String {
-    if x == 0.0 {
-        return "0".to_owned();
-    }
-    if x.is_nan() {
-        return "NaN".to_owned();
-    }
-    if x.is_infinite() {
-        return if x > 0.0 { "∞".to_owned() } else { "-∞".to_owned() };
-    }
-    format!("{x}")
-}
-
-fn triple(x: f64, y: f64, z: f64) -> String {
-    format!("{{{}, {}, {}}}", format_number(x), format_number(y), format_number(z))
-}
-
-fn point_text(p: Point3) -> String {
-    triple(p.x, p.y, p.z)
-}
-
-fn vector_text(v: Vector3) -> String {
-    triple(v.x, v.y, v.z)
-}
-
-fn plane_text(p: &Plane) -> String {
-    format!(
-        "O:{} X:{} Y:{} Z:{}",
-        point_text(p.origin),
-        vector_text(p.x_axis),
-        vector_text(p.y_axis),
-        vector_text(p.z_axis)
-    )
-}
-
-/// One item as text, the way Grasshopper's panel shows it where it can.
+/// One item as text, the way Grasshopper's panel shows it.
 pub fn value_text(value: &Value) -> String {
-    match value {
-        Value::Number(x) => format_number(*x),
-        Value::Integer(i) => i.to_string(),
-        Value::Boolean(b) => if *b { "True" } else { "False" }.to_owned(),
-        Value::Text(s) => s.clone(),
-        Value::Point(p) => point_text(*p),
-        Value::Vector(v) => vector_text(*v),
-        Value::Plane(p) => plane_text(p),
-        Value::Domain(d) => format!("{} To {}", format_number(d.t0), format_number(d.t1)),
-        Value::Transform(t) => {
-            let rows = t.to_rows();
-            let rows: Vec<String> = rows
-                .iter()
-                .map(|r| {
-                    let cells: Vec<String> = r.iter().map(|&x| format_number(x)).collect();
-                    format!("[{}]", cells.join(", "))
-                })
-                .collect();
-            format!("Transform [{}]", rows.join(", "))
-        }
-    }
+    format_value(value)
 }
 
 /// A tree as text: each branch as its path and item count, then its items one per line.
@@ -110,12 +54,7 @@ pub fn value_json(value: &Value) -> Json {
         Value::Text(s) => json!(s),
         Value::Point(p) => json!({ "point": xyz(p.x, p.y, p.z) }),
         Value::Vector(v) => json!({ "vector": xyz(v.x, v.y, v.z) }),
-        Value::Plane(p) => json!({ "plane": {
-            "origin": xyz(p.origin.x, p.origin.y, p.origin.z),
-            "x": xyz(p.x_axis.x, p.x_axis.y, p.x_axis.z),
-            "y": xyz(p.y_axis.x, p.y_axis.y, p.y_axis.z),
-            "z": xyz(p.z_axis.x, p.z_axis.y, p.z_axis.z),
-        }}),
+        Value::Plane(p) => json!({ "plane": plane_json(p) }),
         Value::Domain(d) => json!({ "domain": [number_json(d.t0), number_json(d.t1)] }),
         Value::Transform(t) => {
             let rows: Vec<Json> = t
@@ -125,7 +64,70 @@ pub fn value_json(value: &Value) -> Json {
                 .collect();
             json!({ "transform": rows })
         }
+        Value::Box(b) => json!({ "box": {
+            "plane": plane_json(&b.plane),
+            "x": [number_json(b.x.t0), number_json(b.x.t1)],
+            "y": [number_json(b.y.t0), number_json(b.y.t1)],
+            "z": [number_json(b.z.t0), number_json(b.z.t1)],
+        }}),
+        Value::Line(l) => json!({ "line": [point_json(l.from), point_json(l.to)] }),
+        Value::Circle(c) => json!({ "circle": {
+            "plane": plane_json(&c.plane),
+            "radius": number_json(c.radius),
+        }}),
+        Value::Arc(a) => json!({ "arc": {
+            "plane": plane_json(&a.circle.plane),
+            "radius": number_json(a.circle.radius),
+            "angle": [number_json(a.angle.t0), number_json(a.angle.t1)],
+        }}),
+        Value::Curve(c) => {
+            let n = c.to_nurbs();
+            let d = c.domain();
+            json!({ "curve": {
+                "degree": n.degree(),
+                "points": n.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
+                "weights": n.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
+                "knots": n.knots().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+                "periodic": n.is_periodic(),
+                "domain": [number_json(d.t0), number_json(d.t1)],
+            }})
+        }
+        Value::Surface(s) => json!({ "surface": {
+            "degree": [s.degree_u(), s.degree_v()],
+            "count": [s.count_u(), s.count_v()],
+            "points": s.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
+            "weights": s.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
+            "knots_u": s.knots_u().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+            "knots_v": s.knots_v().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+        }}),
+        Value::Brep(b) => json!({ "brep": {
+            "faces": b.faces().len(),
+            "edges": b.edges().iter().map(|e| {
+                let c = &e.curve;
+                json!({
+                    "degree": c.degree(),
+                    "points": c.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
+                    "weights": c.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
+                    "knots": c.knots().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+                    "vertices": e.vertices,
+                })
+            }).collect::<Vec<_>>(),
+            "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
+        }}),
     }
+}
+
+fn point_json(p: Point3) -> Json {
+    xyz(p.x, p.y, p.z)
+}
+
+fn plane_json(p: &Plane) -> Json {
+    json!({
+        "origin": xyz(p.origin.x, p.origin.y, p.origin.z),
+        "x": xyz(p.x_axis.x, p.x_axis.y, p.x_axis.z),
+        "y": xyz(p.y_axis.x, p.y_axis.y, p.y_axis.z),
+        "z": xyz(p.z_axis.x, p.z_axis.y, p.z_axis.z),
+    })
 }
 
 /// A tree as a JSON object `{"{0;1}": [item, …], …}` in path order.
@@ -157,15 +159,16 @@ mod tests {
     use super::*;
 
     #[test]
-    fn numbers_print_shortest_and_without_negative_zero() {
-        assert_eq!(format_number(0.1), "0.1");
-        assert_eq!(format_number(-0.0), "0");
-        assert_eq!(format_number(2.0), "2");
+    fn trees_render_as_json_objects_by_path() {
+        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
+        assert_eq!(
+            tree_json(&t).to_string(),
+            r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
+        );
     }
 
     #[test]
-    fn trees_render_as_json_objects_by_path() {
-        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
-        assert_eq!(tree_json(&t).to_string(), r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#);
+    fn negative_zero_is_written_as_zero() {
+        assert_eq!(number_json(-0.0).to_string(), "0.0");
     }
 }

@@ -24,6 +24,9 @@ mod arc_length;
 pub mod basis;
 mod bezier;
 mod bounding_box;
+mod brep;
+mod brep_builders;
+mod brep_mass;
 mod circle;
 mod continuity;
 mod curve;
@@ -44,9 +47,11 @@ mod nurbs_curve_edit;
 mod nurbs_surface;
 mod nurbs_surface_edit;
 mod oriented_box;
+mod oriented_box_boundary;
 mod plane;
 mod point;
 mod polyline;
+mod surface_bounding_box;
 mod surface_closest_point;
 mod surface_curvature;
 mod surface_derivatives;
@@ -62,6 +67,10 @@ mod vector;
 pub use crate::arc::Arc;
 pub use crate::bezier::Bezier;
 pub use crate::bounding_box::BoundingBox;
+pub use crate::brep::{
+    Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, EdgeKind, LoopKind, TrimKind,
+};
+pub use crate::brep_mass::{AreaProperties, VolumeProperties};
 pub use crate::circle::Circle;
 pub use crate::continuity::{
     Continuity, ContinuityTolerances, continuity, continuity_with_tolerances,

@@ -8,9 +8,7 @@
 //! `i · count_v + j`: rows run along `u`, and each row holds the `count_v` points of one
 //! `v` column, exactly like the `cvs_u_by_v[i][j]` arrays of the reference cases.
 
-use crate::basis::{
-    MAX_DEGREE, MAX_ORDER, basis_function_derivatives, basis_functions, span_index,
-};
+use crate::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
 use crate::surface_direction::SurfaceDirection;
 use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 
@@ -22,6 +20,27 @@ use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 /// likewise in `v`.
 ///
 /// Instances are always valid: every constructor checks degrees, counts, knots and weights.
+///
+/// # Examples
+/// ```
+/// use locus_kernel::{Point3, Sphere};
+/// # fn main() -> locus_kernel::Result<()> {
+/// // Rhino's sphere of radius 2: degree 2 × 2, 9 × 5 control points.
+/// let sphere = Sphere::new(Point3::ORIGIN, 2.0)?.to_nurbs()?;
+/// assert_eq!((sphere.count_u(), sphere.count_v()), (9, 5));
+///
+/// // The book's Pull: the closest point to a point outside, with its parameters.
+/// let cp = sphere.closest_point(Point3::new(0.0, 3.0, 4.0))?;
+/// assert!((cp.distance - 3.0).abs() < 1e-12);
+/// let normal = sphere.normal_at(cp.u, cp.v)?;
+/// assert!((normal.y - 0.6).abs() < 1e-12 && (normal.z - 0.8).abs() < 1e-12);
+///
+/// // Curvatures are signed against the outward normal, as in Rhino.
+/// let k = sphere.curvature_at(cp.u, cp.v)?;
+/// assert!((k.gaussian - 0.25).abs() < 1e-12 && (k.mean + 0.5).abs() < 1e-12);
+/// # Ok(())
+/// # }
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
     pub(crate) degree_u: usize,
@@ -405,8 +424,8 @@ impl NurbsSurface {
         let sv = span_index(q, &self.knots_v, v);
         let mut nu = [[0.0; MAX_ORDER]; 3];
         let mut nv = [[0.0; MAX_ORDER]; 3];
-        basis_function_derivatives(p, &self.knots_u, su, u, order, &mut nu);
-        basis_function_derivatives(q, &self.knots_v, sv, v, order, &mut nv);
+        basis_with_derivatives(p, &self.knots_u, su, u, &mut nu);
+        basis_with_derivatives(q, &self.knots_v, sv, v, &mut nv);
         let i0 = su + 1 - p;
         let j0 = sv + 1 - q;
         // a[k][l] is the homogeneous derivative ∂^(k+l) Sw / ∂u^k ∂v^l.
@@ -493,6 +512,78 @@ impl NurbsSurface {
                 .iter()
                 .copied()
         })
+    }
+}
+
+/// The `p + 1` non-zero basis functions at `t` in span `span` with their first and second
+/// derivatives: `out[k][r]` is the `k`-th derivative of the `r`-th function.
+///
+/// This is the triangle of The NURBS Book's A2.2 run up to degree `p`, with the derivatives
+/// read off its last two steps: for the step from degree `j − 1` to `j` the algorithm forms
+/// `temp_r = N_{r,j−1} / (u_{r+j} − u_r)`, and `N'_{r,j} = j (temp_{r−1} − temp_r)`. Applying
+/// the same identity to the derivatives of degree `p − 1` gives the second derivatives. It is
+/// equivalent to A2.3 for two derivatives but does a fraction of its work, which matters in
+/// the hot loops of closest points and mass properties.
+pub(crate) fn basis_with_derivatives(
+    p: usize,
+    knots: &[f64],
+    span: usize,
+    t: f64,
+    out: &mut [[f64; MAX_ORDER]; 3],
+) {
+    let mut left = [0.0; MAX_ORDER];
+    let mut right = [0.0; MAX_ORDER];
+    for j in 1..=p {
+        left[j] = t - knots[span + 1 - j];
+        right[j] = knots[span + j] - t;
+    }
+    let mut n = [0.0; MAX_ORDER];
+    n[0] = 1.0;
+    // One step of the triangle from degree j − 1 to j; records temp_r and returns nothing.
+    let step = |n: &mut [f64; MAX_ORDER], j: usize, temps: &mut [f64; MAX_ORDER]| {
+        let mut saved = 0.0;
+        for r in 0..j {
+            let denom = right[r + 1] + left[j - r];
+            let temp = if denom != 0.0 { n[r] / denom } else { 0.0 };
+            temps[r] = temp;
+            n[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        n[j] = saved;
+    };
+    let mut temps = [0.0; MAX_ORDER];
+    for j in 1..=p.saturating_sub(2) {
+        step(&mut n, j, &mut temps);
+    }
+    // Derivatives of the degree p − 1 functions.
+    let mut dm = [0.0; MAX_ORDER];
+    if p >= 2 {
+        step(&mut n, p - 1, &mut temps);
+        let f = (p - 1) as f64;
+        for (r, d) in dm[..p].iter_mut().enumerate() {
+            let before = if r > 0 { temps[r - 1] } else { 0.0 };
+            let after = if r < p - 1 { temps[r] } else { 0.0 };
+            *d = f * (before - after);
+        }
+    }
+    // The last step, with the first and second derivative quotients.
+    let mut q = [0.0; MAX_ORDER];
+    for (r, qr) in q[..p].iter_mut().enumerate() {
+        let denom = right[r + 1] + left[p - r];
+        *qr = if denom != 0.0 { dm[r] / denom } else { 0.0 };
+    }
+    step(&mut n, p, &mut temps);
+    let f = p as f64;
+    for r in 0..=p {
+        let (t0, q0) = if r > 0 {
+            (temps[r - 1], q[r - 1])
+        } else {
+            (0.0, 0.0)
+        };
+        let (t1, q1) = if r < p { (temps[r], q[r]) } else { (0.0, 0.0) };
+        out[0][r] = n[r];
+        out[1][r] = f * (t0 - t1);
+        out[2][r] = f * (q0 - q1);
     }
 }
 
@@ -747,6 +838,39 @@ pub(crate) mod tests {
                 );
                 assert!((d.duv - fd_uv).length() < 1e-7);
                 assert!((d.dvv - fd_vv).length() < 1e-7);
+            }
+        }
+    }
+
+    #[test]
+    fn fast_basis_derivatives_match_a2_3() {
+        use crate::basis::basis_function_derivatives;
+        let cases: [(usize, &[f64]); 5] = [
+            (1, &[0.0, 0.5, 1.0]),
+            (2, &[0.0, 0.0, 0.3, 0.3, 1.0, 1.0]),
+            (3, &[0.0, 0.0, 0.0, 0.2, 0.5, 0.5, 1.0, 1.0, 1.0]),
+            (4, &[-1.0, -1.0, -1.0, -1.0, 0.0, 2.0, 2.0, 2.0, 2.0]),
+            (5, &[0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0]),
+        ];
+        for (p, knots) in cases {
+            let n = knots.len() - p + 1;
+            let (a, b) = (knots[p - 1], knots[n - 1]);
+            for k in 0..=40 {
+                let t = a + (b - a) * k as f64 / 40.0;
+                let span = span_index(p, knots, t);
+                let mut reference = [[0.0; MAX_ORDER]; 3];
+                basis_function_derivatives(p, knots, span, t, 2, &mut reference);
+                let mut fast = [[0.0; MAX_ORDER]; 3];
+                basis_with_derivatives(p, knots, span, t, &mut fast);
+                for order in 0..3 {
+                    for r in 0..=p {
+                        let (x, y) = (fast[order][r], reference[order][r]);
+                        assert!(
+                            (x - y).abs() <= 1e-12 * (1.0 + y.abs()),
+                            "degree {p}, t {t}, order {order}, function {r}: {x} vs {y}"
+                        );
+                    }
+                }
             }
         }
     }

@@ -120,9 +120,31 @@ impl NurbsSurface {
         }
     }
 
-    /// The control points along one side of the grid, in increasing parameter order.
+    /// The control points of the boundary curve along one side: the side's row or column of
+    /// the grid where the knots are clamped at that end, otherwise the control points of the
+    /// boundary isocurve.
     fn side_points(&self, side: SurfaceSide) -> Vec<Point3> {
         let (nu, nv) = (self.count_u, self.count_v);
+        let fixed = side.fixed_direction();
+        let knots = self.knots(fixed);
+        let p = self.degree(fixed);
+        let clamped = if side.is_at_end() {
+            knots[knots.len() - p..]
+                .iter()
+                .all(|&k| k == knots[knots.len() - 1])
+        } else {
+            knots[..p].iter().all(|&k| k == knots[0])
+        };
+        if !clamped {
+            let t = if side.is_at_end() {
+                self.domain(fixed).t1
+            } else {
+                self.domain(fixed).t0
+            };
+            if let Ok(curve) = self.isocurve(fixed.other(), t) {
+                return curve.points().to_vec();
+            }
+        }
         match side {
             SurfaceSide::South => (0..nu).map(|i| self.points[i * nv]).collect(),
             SurfaceSide::North => (0..nu).map(|i| self.points[i * nv + nv - 1]).collect(),
@@ -133,10 +155,10 @@ impl NurbsSurface {
 
     /// The point a side collapses to, or `None` when the side is not singular.
     ///
-    /// A side is singular when all its control points coincide within [`ZERO_TOLERANCE`]
-    /// (scaled by the size of the coordinates), as at the poles of a sphere and the apex of a
-    /// cone (openNURBS's `IsSingular`). For a clamped surface the whole boundary curve is then
-    /// that one point.
+    /// A side is singular when all the control points of its boundary curve coincide within
+    /// [`ZERO_TOLERANCE`] (scaled by the size of the coordinates), as at the poles of a sphere
+    /// and the apex of a cone (openNURBS's `IsSingular`); the whole side is then that one
+    /// point. For knots clamped at that end these are the side's own control points.
     pub fn singular_point(&self, side: SurfaceSide) -> Option<Point3> {
         let pts = self.side_points(side);
         let first = pts[0];
@@ -321,5 +343,30 @@ mod tests {
         assert!(SurfaceSide::ALL.iter().all(|&s| !cylinder.is_singular(s)));
         assert!(cylinder.is_closed(SurfaceDirection::U, 1e-12));
         assert!(!wavy(false).is_closed(SurfaceDirection::U, 1e-9));
+
+        // Unclamped in v: the first column of control points coincides, but the boundary
+        // v = v0 is not a point, so the side is not singular.
+        let apex = Point3::new(0.0, 0.0, 0.0);
+        let points = (0..3)
+            .map(|i| {
+                vec![
+                    apex,
+                    Point3::new(i as f64, 1.0, 0.0),
+                    Point3::new(i as f64, 2.0, 1.0),
+                    Point3::new(i as f64, 3.0, 0.0),
+                ]
+            })
+            .collect();
+        let s = NurbsSurface::non_rational(
+            1,
+            2,
+            points,
+            vec![0.0, 1.0, 2.0],
+            vec![-1.0, 0.0, 1.0, 2.0, 3.0],
+        )
+        .unwrap();
+        assert!(!s.is_singular(SurfaceSide::South));
+        let d = s.domain_v();
+        assert!(s.point_at(0.0, d.t0).distance(s.point_at(2.0, d.t0)) > 0.5);
     }
 }

@@ -18,7 +18,7 @@
 //!
 //! The smallest distance wins.
 
-use crate::basis::span_index;
+use crate::basis::{MAX_ORDER, basis_functions, span_index};
 use crate::nurbs_surface::check_parameters;
 use crate::surface_direction::SurfaceDirection;
 use crate::surface_direction::SurfaceSide;
@@ -253,11 +253,38 @@ impl NurbsSurface {
             let s = k as f64 / (n - 1) as f64;
             (1.0 - s) * range[0] + s * range[1]
         };
+        // The basis functions of each sample column once, then each row's combination.
+        let (p, q) = (self.degree_u(), self.degree_v());
+        let mut basis_v = [[0.0; MAX_ORDER]; MAX_SAMPLES];
+        let mut first_v = [0usize; MAX_SAMPLES];
+        for j in 0..nv {
+            let v = param(rect.v, j, nv);
+            let span = span_index(q, self.knots_v(), v);
+            basis_functions(q, self.knots_v(), span, v, &mut basis_v[j]);
+            first_v[j] = span + 1 - q;
+        }
+        let mut basis_u = [0.0; MAX_ORDER];
         for i in 0..nu {
             let u = param(rect.u, i, nu);
+            let span = span_index(p, self.knots_u(), u);
+            basis_functions(p, self.knots_u(), span, u, &mut basis_u);
+            let i0 = span + 1 - p;
             for j in 0..nv {
-                let v = param(rect.v, j, nv);
-                grid[i * nv + j] = self.point_at(u, v).distance_squared(test);
+                let (mut x, mut y, mut z, mut w) = (0.0, 0.0, 0.0, 0.0);
+                for (r, &bu) in basis_u[..=p].iter().enumerate() {
+                    let row = (i0 + r) * self.count_v() + first_v[j];
+                    let cvs = self.points[row..=row + q]
+                        .iter()
+                        .zip(&self.weights[row..=row + q]);
+                    for ((pt, &wt), &bv) in cvs.zip(&basis_v[j][..=q]) {
+                        let b = bu * bv * wt;
+                        x += b * pt.x;
+                        y += b * pt.y;
+                        z += b * pt.z;
+                        w += b;
+                    }
+                }
+                grid[i * nv + j] = Point3::new(x / w, y / w, z / w).distance_squared(test);
             }
         }
         let mut starts: Vec<(f64, usize, usize)> = Vec::new();
@@ -452,10 +479,13 @@ impl NurbsSurface {
     }
 }
 
+/// The most samples per span and direction.
+const MAX_SAMPLES: usize = 16;
+
 /// The number of samples per span and direction for a degree: enough to separate the local
 /// minima a polynomial of that degree can have.
 fn samples_per_span(degree: usize) -> usize {
-    (2 * degree + 2).clamp(4, 16)
+    (2 * degree + 2).clamp(4, MAX_SAMPLES)
 }
 
 /// The Newton step for `g + h·s = 0` in one variable, falling back to the Gauss–Newton

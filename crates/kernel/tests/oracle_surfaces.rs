@@ -9,7 +9,8 @@ mod support;
 use std::collections::HashMap;
 
 use locus_kernel::{
-    Cone, Cylinder, Interval, NurbsSurface, Plane, Point3, Sphere, SurfaceSide, Vector3,
+    Brep, Cone, Cylinder, Interval, NurbsSurface, OrientedBox, Plane, Point3, Sphere, SurfaceSide,
+    Vector3,
 };
 use serde_json::Value;
 use support::{Failures, close, close3, load_oracle, num, numbers, triple};
@@ -247,6 +248,8 @@ fn occt_surface_closest_points() {
     let mut failures = Failures::default();
     let mut total = 0;
     let mut worst_distance: f64 = 0.0;
+    let mut worst_point: f64 = 0.0;
+    let mut worst_parameter: f64 = 0.0;
     for case in file["surface_closest_point"]
         .as_array()
         .expect("surface_closest_point")
@@ -273,6 +276,7 @@ fn occt_surface_closest_points() {
                     cp.distance, cp.u, cp.v, query["u"], query["v"], query["at"]
                 )
             });
+            worst_point = worst_point.max(cp.point.distance(point(&query["point"])));
             failures.check(
                 close3(cp.point.to_array(), triple(&query["point"]), 1e-6),
                 || format!("{label}: point {:?}, expected {}", cp.point, query["point"]),
@@ -298,6 +302,11 @@ fn occt_surface_closest_points() {
                             .any(|&end| (cp.u - end).abs() <= 1e-6 * du.length())
                         && (eu == du.t0 || eu == du.t1));
                 let v_ok = (cp.v - ev).abs() <= 1e-6 * dv.length();
+                if !u_arbitrary && !seam {
+                    worst_parameter = worst_parameter
+                        .max((cp.u - eu).abs() / du.length())
+                        .max((cp.v - ev).abs() / dv.length());
+                }
                 total += 1;
                 failures.check(u_ok && v_ok, || {
                     format!(
@@ -308,7 +317,10 @@ fn occt_surface_closest_points() {
             }
         }
     }
-    eprintln!("surface closest points: worst relative distance deviation {worst_distance:e}");
+    eprintln!(
+        "surface closest points: worst relative distance deviation {worst_distance:e}, point \
+         {worst_point:e}, parameter (per domain length) {worst_parameter:e}"
+    );
     assert!(total > 0, "no cases in occt surface_closest_point");
     failures.finish("occt surface_closest_point");
 }
@@ -413,4 +425,78 @@ fn occt_singular_sides() {
     }
     assert!(total > 0, "no cases in singular sides");
     failures.finish("singular sides");
+}
+
+/// The `breps` section: the topology of Rhino's box and sphere.
+#[test]
+fn opennurbs_brep_topology() {
+    let file = load_oracle("opennurbs-cases.json");
+    let mut failures = Failures::default();
+    let mut total = 0;
+    for case in file["breps"].as_array().expect("breps") {
+        let case_name = name(case);
+        total += 1;
+        let brep = if let Some(dims) = case_name.strip_prefix("box-") {
+            // "box-x0,y0,z0-x1,y1,z1"
+            let (a, b) = dims.split_once('-').expect("two corners");
+            let parse = |s: &str| -> Vec<f64> {
+                s.split(',').map(|x| x.parse().expect("a number")).collect()
+            };
+            let (a, b) = (parse(a), parse(b));
+            Brep::from_box(&OrientedBox::new(
+                Plane::WORLD_XY,
+                Interval::new(a[0], b[0]),
+                Interval::new(a[1], b[1]),
+                Interval::new(a[2], b[2]),
+            ))
+        } else if let Some(r) = case_name.strip_prefix("sphere-r") {
+            Brep::from_sphere(
+                &Sphere::new(Point3::ORIGIN, r.parse().expect("a radius")).expect("sphere"),
+            )
+        } else {
+            failures.push(format!("{case_name}: unknown brep case"));
+            continue;
+        };
+        let brep = match brep {
+            Ok(b) => b,
+            Err(e) => {
+                failures.push(format!("{case_name}: does not build: {e}"));
+                continue;
+            }
+        };
+        let counts = (
+            brep.faces().len(),
+            brep.edges().len(),
+            brep.vertices().len(),
+        );
+        let expected = (
+            case["faces"].as_u64().expect("faces") as usize,
+            case["edges"].as_u64().expect("edges") as usize,
+            case["vertices"].as_u64().expect("vertices") as usize,
+        );
+        failures.check(counts == expected, || {
+            format!("{case_name}: (faces, edges, vertices) {counts:?}, expected {expected:?}")
+        });
+        if let Some(locations) = case.get("vertex_locations") {
+            let expected: Vec<Point3> = locations
+                .as_array()
+                .expect("vertex locations")
+                .iter()
+                .map(point)
+                .collect();
+            let ours: Vec<Point3> = brep.vertices().iter().map(|v| v.point).collect();
+            total += 1;
+            failures.check(
+                expected.len() == ours.len()
+                    && expected
+                        .iter()
+                        .all(|e| ours.iter().any(|o| o.distance(*e) <= 1e-12)),
+                || format!("{case_name}: vertices {ours:?}, expected {expected:?}"),
+            );
+        }
+        total += 1;
+        failures.check(brep.is_solid(), || format!("{case_name}: not closed"));
+    }
+    assert!(total > 0, "no cases in breps");
+    failures.finish("opennurbs breps");
 }

@@ -9,7 +9,8 @@
 //! **Params** ([`params`])
 //! - Primitive ([`params::primitive`]): Number \[Num\], Integer \[Int\], Boolean \[Bool\],
 //!   Text \[Txt\], Domain.
-//! - Geometry ([`params::curve`]): Curve \[Crv\].
+//! - Geometry ([`params::geometry`], [`params::curve`]): Point \[Pt\], Vector \[Vec\], Plane
+//!   \[Pln\], Curve \[Crv\].
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -34,12 +35,31 @@
 //! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
 //!   Shatter.
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
-//! - The Curve parameter \[Crv\] is in [`params::curve`].
+//!
+//! **Vector** ([`vector`])
+//! - Point ([`vector::point`], [`vector::pull`]): Construct Point \[Pt\], Deconstruct
+//!   \[pDecon\], Distance \[Dist\], Point Between \[PtBtw\], Pull Point \[Pull\].
+//! - Vector ([`vector::vectors`], [`vector::products`]): Vector XYZ \[Vec\], Deconstruct Vector
+//!   \[DeVec\], Unit X/Y/Z, Vector 2Pt \[Vec2Pt\], Unit Vector \[Unit\], Amplitude \[Amp\],
+//!   Vector Length \[VLen\], Reverse \[Rev\], Rotate \[VRot\], Dot Product \[DProd\], Cross
+//!   Product \[XProd\], Angle.
+//! - Plane ([`vector::plane`]): Construct Plane \[Pl\], Plane 3Pt, Plane Normal \[Pl\], XY/YZ/XZ
+//!   Plane, Deconstruct Plane \[DePlane\], Plane Coefficients \[PlEq\], Plane Closest Point.
+//!
+//! **Transform** ([`transform`])
+//! - Euclidean ([`transform::euclidean`]): Move, Rotate, Rotate Axis \[RotAx\], Rotate 3D
+//!   \[Rot3D\], Mirror, Orient.
+//! - Affine ([`transform::affine`]): Scale, Scale NU, Shear, Project \[Proj\].
+//! - Util ([`transform::util`]): Transform, Compound \[Comp\], Inverse Transform \[Inverse\],
+//!   Deconstruct Transform \[DeXform\], Construct Transform \[Xform\]; all geometry goes
+//!   through [`transform::apply::transform_value`].
 
 pub mod curve;
 pub mod expression;
 pub mod maths;
 pub mod params;
+pub mod transform;
+pub mod vector;
 
 use locus_runtime::NodeRegistry;
 
@@ -47,5 +67,7 @@ use locus_runtime::NodeRegistry;
 pub fn register(registry: &mut NodeRegistry) {
     params::register(registry);
     maths::register(registry);
+    vector::register(registry);
+    transform::register(registry);
     curve::register(registry);
 }

@@ -104,6 +104,76 @@ fn the_checks_catch_a_bad_declaration() {
 }
 
 #[test]
+fn vector_transform_and_geometry_params_ids_are_registered() {
+    use locus_nodes::params::geometry;
+    use locus_nodes::transform::{affine, euclidean, util};
+    use locus_nodes::vector::{plane, point, products, pull, vectors};
+    let registry = registry();
+    let ids = [
+        geometry::POINT,
+        geometry::VECTOR,
+        geometry::PLANE,
+        point::CONSTRUCT_POINT,
+        point::DECONSTRUCT_POINT,
+        point::DISTANCE,
+        point::POINT_BETWEEN,
+        pull::PULL_POINT,
+        vectors::VECTOR_XYZ,
+        vectors::DECONSTRUCT_VECTOR,
+        vectors::UNIT_X,
+        vectors::UNIT_Y,
+        vectors::UNIT_Z,
+        vectors::VECTOR_2PT,
+        vectors::UNIT_VECTOR,
+        vectors::AMPLITUDE,
+        vectors::VECTOR_LENGTH,
+        vectors::REVERSE,
+        vectors::ROTATE,
+        products::DOT_PRODUCT,
+        products::CROSS_PRODUCT,
+        products::ANGLE,
+        plane::CONSTRUCT_PLANE,
+        plane::PLANE_3PT,
+        plane::PLANE_NORMAL,
+        plane::XY_PLANE,
+        plane::YZ_PLANE,
+        plane::XZ_PLANE,
+        plane::DECONSTRUCT_PLANE,
+        plane::PLANE_COEFFICIENTS,
+        plane::PLANE_CLOSEST_POINT,
+        euclidean::MOVE,
+        euclidean::ROTATE,
+        euclidean::ROTATE_AXIS,
+        euclidean::ROTATE_3D,
+        euclidean::MIRROR,
+        euclidean::ORIENT,
+        affine::SCALE,
+        affine::SCALE_NU,
+        affine::SHEAR,
+        affine::PROJECT,
+        util::TRANSFORM,
+        util::COMPOUND,
+        util::INVERSE_TRANSFORM,
+        util::DECONSTRUCT_TRANSFORM,
+        util::CONSTRUCT_TRANSFORM,
+    ];
+    for id in ids {
+        assert!(registry.get(id).is_some(), "{id} is not registered");
+    }
+    let vector_and_transform = registry
+        .iter()
+        .filter(|t| t.category == "Vector" || t.category == "Transform")
+        .count();
+    let geometry_params = registry
+        .iter()
+        .filter(|t| t.category == "Params" && t.subcategory == "Geometry")
+        // The Curve container belongs to the Curve nodes (tests/curve_registry.rs).
+        .filter(|t| t.id != locus_nodes::params::curve::CURVE)
+        .count();
+    assert_eq!(vector_and_transform + geometry_params, ids.len());
+}
+
+#[test]
 fn maths_and_params_ids_are_registered() {
     use locus_nodes::{maths, params};
     let registry = registry();

@@ -9,18 +9,22 @@
 //!
 //! The value-level table is the `cast_table!` invocation below: one line per pair, naming a
 //! typed function `fn(&A) -> Option<B>`. The same line generates the per-value dispatch and
-//! the branch-level loop over a typed column, so the two cannot disagree. Casts of kernel
-//! geometry types (geometry → bounding box, line → curve, curve → number as length, box →
-//! B-rep …) are added there as those types join [`Value`].
+//! the branch-level loop over a typed column, so the two cannot disagree. The conversions
+//! themselves live in `cast_rules.rs` (numbers, text, points) and `cast_geometry.rs`
+//! (bounding boxes and other geometry).
 
 use std::borrow::Cow;
 use std::fmt;
 
 use locus_kernel::{
-    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
     Vector3,
 };
 
+use crate::cast_geometry::{
+    arc_to_box, circle_plane, circle_to_box, curve_to_arc, curve_to_box, curve_to_circle,
+    curve_to_line, line_to_box, point_to_box, surface_to_box,
+};
 use crate::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
     text_to_boolean, text_to_domain, text_to_integer,
@@ -54,10 +58,15 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Plane, Point)
             | (Domain, Number)
             | (Point | Vector | Plane | Domain | Transform, Text)
+            | (Point | Line | Circle | Arc | Curve | Surface, Box)
             | (Line | Circle | Arc, Curve)
-            | (Line | Circle | Arc | Curve, Number)
             | (Curve, Line | Circle | Arc)
-            | (Box | Line | Circle | Arc | Curve | Surface, Text)
+            | (Line | Circle | Arc | Curve, Number)
+            | (Curve, Domain)
+            | (Circle | Arc | Box, Plane)
+            | (Line, Vector)
+            | (Box | Line | Circle | Arc | Curve | Surface | Brep, Text)
+            | (Box | Surface, Brep)
     )
 }
 
@@ -308,30 +317,37 @@ cast_table! {
     Domain(Interval) => Text(String) = |d: &Interval| Some(format_domain(*d));
     Transform(locus_kernel::Transform) => Text(String) =
         |t: &locus_kernel::Transform| Some(format_transform(t));
+    Point(Point3) => Box(OrientedBox) = point_to_box;
+    Line(Line) => Box(OrientedBox) = line_to_box;
+    Circle(Circle) => Box(OrientedBox) = circle_to_box;
+    Arc(ArcCurve) => Box(OrientedBox) = arc_to_box;
+    Curve(Shared<Curve>) => Box(OrientedBox) = curve_to_box;
+    Surface(Shared<NurbsSurface>) => Box(OrientedBox) = surface_to_box;
     Line(Line) => Curve(Shared<Curve>) = |l: &Line| Some(Shared::new(Curve::from(*l)));
     Circle(Circle) => Curve(Shared<Curve>) = |c: &Circle| Some(Shared::new(Curve::from(*c)));
     Arc(ArcCurve) => Curve(Shared<Curve>) = |a: &ArcCurve| Some(Shared::new(Curve::from(*a)));
+    Curve(Shared<Curve>) => Line(Line) = curve_to_line;
+    Curve(Shared<Curve>) => Circle(Circle) = curve_to_circle;
+    Curve(Shared<Curve>) => Arc(ArcCurve) = curve_to_arc;
     Line(Line) => Number(f64) = |l: &Line| Some(l.length());
-    Circle(Circle) => Number(f64) = |c: &Circle| Some(std::f64::consts::TAU * c.radius);
+    Circle(Circle) => Number(f64) = |c: &Circle| Some(c.circumference());
     Arc(ArcCurve) => Number(f64) = |a: &ArcCurve| Some(a.length());
     Curve(Shared<Curve>) => Number(f64) = |c: &Shared<Curve>| Some(c.length());
-    Curve(Shared<Curve>) => Line(Line) = |c: &Shared<Curve>| match &**c {
-        Curve::Line { line, .. } => Some(*line),
-        _ => None,
-    };
-    Curve(Shared<Curve>) => Circle(Circle) = |c: &Shared<Curve>| match &**c {
-        Curve::Circle { circle, .. } => Some(*circle),
-        _ => None,
-    };
-    Curve(Shared<Curve>) => Arc(ArcCurve) = |c: &Shared<Curve>| match &**c {
-        Curve::Arc { arc, .. } => Some(*arc),
-        _ => None,
-    };
+    Curve(Shared<Curve>) => Domain(Interval) = |c: &Shared<Curve>| Some(c.domain());
+    Circle(Circle) => Plane(Plane) = circle_plane;
+    Arc(ArcCurve) => Plane(Plane) = |a: &ArcCurve| circle_plane(&a.circle);
+    Box(OrientedBox) => Plane(Plane) = |b: &OrientedBox| Some(b.plane);
+    Line(Line) => Vector(Vector3) = |l: &Line| Some(l.direction());
     Box(OrientedBox) => Text(String) = |b: &OrientedBox| Some(format_value(&Value::Box(*b)));
     Line(Line) => Text(String) = |l: &Line| Some(format_value(&Value::Line(*l)));
     Circle(Circle) => Text(String) = |c: &Circle| Some(format_value(&Value::Circle(*c)));
     Arc(ArcCurve) => Text(String) = |a: &ArcCurve| Some(format_value(&Value::Arc(*a)));
-    Curve(Shared<Curve>) => Text(String) = |c: &Shared<Curve>| Some(format_value(&Value::Curve(c.clone())));
+    Curve(Shared<Curve>) => Text(String) =
+        |c: &Shared<Curve>| Some(format_value(&Value::Curve(c.clone())));
+    Box(OrientedBox) => Brep(Shared<Brep>) = |b: &OrientedBox| Brep::from_box(b).ok().map(Shared::new);
+    Surface(Shared<NurbsSurface>) => Brep(Shared<Brep>) =
+        |s: &Shared<NurbsSurface>| Brep::from_surface((**s).clone()).ok().map(Shared::new);
+    Brep(Shared<Brep>) => Text(String) = |b: &Shared<Brep>| Some(format_value(&Value::Brep(b.clone())));
     Surface(Shared<NurbsSurface>) => Text(String) =
         |s: &Shared<NurbsSurface>| Some(format_value(&Value::Surface(s.clone())));
 }
@@ -383,7 +399,7 @@ mod tests {
                 Plane::WORLD_XY,
                 Interval::UNIT,
                 Interval::UNIT,
-                Interval::UNIT,
+                Interval::new(0.0, 2.0),
             ))],
             DataType::Line => vec![Value::Line(line())],
             DataType::Circle => vec![Value::Circle(circle())],
@@ -396,6 +412,7 @@ mod tests {
             DataType::Surface => vec![Value::Surface(Shared::new(
                 NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
             ))],
+            DataType::Brep => vec![Value::Brep(Shared::new(Brep::default()))],
             DataType::Generic => Vec::new(),
         }
     }

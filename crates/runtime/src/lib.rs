@@ -5,9 +5,11 @@
 
 mod call;
 mod cast;
+mod cast_geometry;
 mod cast_rules;
 mod check;
 mod collect;
+mod compare;
 mod diagnostic;
 mod dot;
 mod evaluator;
@@ -35,6 +37,7 @@ pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value};
 pub use crate::cast_rules::number_to_integer;
 pub use crate::check::{Checked, check, check_text};
+pub use crate::compare::{COMPARE_TOLERANCE, compare_trees, values_agree};
 pub use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
 pub use crate::dot::to_dot;
 pub use crate::evaluator::{EvalError, Evaluator};

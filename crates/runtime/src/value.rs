@@ -10,7 +10,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use locus_kernel::{
-    Arc as ArcCurve, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
     Transform, Vector3,
 };
 
@@ -275,6 +275,8 @@ value_types! {
     Curve(Shared<Curve>) = "Curve", placeholder placeholder_curve();
     /// A NURBS surface, shared.
     Surface(Shared<NurbsSurface>) = "Surface", placeholder placeholder_surface();
+    /// A boundary representation (faces, edges, vertices), shared.
+    Brep(Shared<Brep>) = "Brep", placeholder Shared::new(Brep::default());
 }
 
 /// The curve stored under null curve items: a unit line.

@@ -193,6 +193,19 @@ pub fn format_value(value: &Value) -> String {
             s.count_u(),
             s.count_v()
         ),
+        Value::Brep(b) => format!(
+            "Brep ({} face{}, {} edge{}, {} vert{})",
+            b.faces().len(),
+            if b.faces().len() == 1 { "" } else { "s" },
+            b.edges().len(),
+            if b.edges().len() == 1 { "" } else { "s" },
+            b.vertices().len(),
+            if b.vertices().len() == 1 {
+                "ex"
+            } else {
+                "ices"
+            }
+        ),
     }
 }
 
@@ -299,6 +312,46 @@ mod tests {
             "{1, 0, 0, 5; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1}"
         );
         assert_eq!(format_value(&Value::Boolean(true)), "True");
+    }
+
+    #[test]
+    fn geometry_values_print_a_description() {
+        use locus_kernel::{Arc, Circle, Curve, Line, NurbsSurface, OrientedBox};
+
+        use crate::Shared;
+
+        let line = Line::new(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0));
+        let circle = Circle::new(Plane::WORLD_XY, 2.5).unwrap();
+        let unit = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
+        let arc = Arc::new(unit, Interval::new(0.0, std::f64::consts::FRAC_PI_2)).unwrap();
+        let bx = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::new(0.0, 2.0),
+        );
+        let surface =
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap();
+        let cases = [
+            (Value::Box(bx), "Box (O:{0, 0, 0} sizes 1 × 1 × 2)"),
+            (Value::Line(line), "Line ({0, 0, 0} to {1, 0, 0})"),
+            (Value::Circle(circle), "Circle (R:2.5 at {0, 0, 0})"),
+            (
+                Value::Arc(arc),
+                "Arc (R:1 at {0, 0, 0}, angle 0 To 1.5707963267948966)",
+            ),
+            (
+                Value::Curve(Shared::new(Curve::from(line))),
+                "Line Curve (degree 1, domain 0 To 1)",
+            ),
+            (
+                Value::Surface(Shared::new(surface)),
+                "NURBS Surface (degree 1×1, 2×2 points)",
+            ),
+        ];
+        for (value, text) in cases {
+            assert_eq!(format_value(&value), text);
+        }
     }
 
     #[test]

@@ -371,9 +371,9 @@ mod tests {
         let r = eval("sqrt(-4) + 1", &[], &[]);
         assert_eq!(r.warning.as_deref(), Some("sqrt(-4) is NaN"));
         let r = eval("x * 2", &["x"], &[Operand::Number(f64::INFINITY)]);
-        assert_eq!(r.warning.as_deref(), Some("input x is inf"));
+        assert_eq!(r.warning.as_deref(), Some("input x is Infinity"));
         let r = eval("10^400", &[], &[]);
-        assert_eq!(r.warning.as_deref(), Some("10 ^ 400 is inf"));
+        assert_eq!(r.warning.as_deref(), Some("10 ^ 400 is Infinity"));
         let r = eval("min(1/0, 5)", &[], &[]);
         assert_eq!(r.warning.as_deref(), Some("division by zero"));
     }

@@ -24,7 +24,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use locus_kernel::{Point3, Vector3};
-use locus_runtime::{DataType, Value};
+use locus_runtime::{DataType, Value, format_number, format_value, parse_number};
 
 use super::EvalError;
 
@@ -245,11 +245,9 @@ impl Operand {
     /// for a value of an unsupported type.
     pub fn from_value_numeric(value: &Value) -> Result<Self, EvalError> {
         match value {
-            Value::Text(t) => t
-                .trim()
-                .parse::<f64>()
+            Value::Text(t) => parse_number(t)
                 .map(Operand::Number)
-                .map_err(|_| EvalError::NotANumber(t.clone())),
+                .ok_or_else(|| EvalError::NotANumber(t.clone())),
             other => Self::from_value(other),
         }
     }
@@ -338,16 +336,16 @@ impl Operand {
 }
 
 impl fmt::Display for Operand {
-    /// Formats the operand as text, as `&` concatenates it: numbers in their shortest exact
-    /// form, booleans as `True`/`False`, points and vectors as `{x, y, z}`.
+    /// Formats the operand as the runtime's cast to text does (and so as Grasshopper prints
+    /// values): numbers in the invariant culture with .NET's exponent notation (`0.5`, `1E+15`,
+    /// `NaN`, `Infinity`), booleans as `True`/`False`, points and vectors as `{x, y, z}`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Operand::Number(x) => write!(f, "{x}"),
-            Operand::Boolean(true) => f.write_str("True"),
-            Operand::Boolean(false) => f.write_str("False"),
+            Operand::Number(x) => f.write_str(&format_number(*x)),
             Operand::Text(t) => f.write_str(t),
-            Operand::Point(p) => write!(f, "{{{}, {}, {}}}", p.x, p.y, p.z),
-            Operand::Vector(v) => write!(f, "{{{}, {}, {}}}", v.x, v.y, v.z),
+            Operand::Boolean(b) => f.write_str(&format_value(&Value::Boolean(*b))),
+            Operand::Point(p) => f.write_str(&format_value(&Value::Point(*p))),
+            Operand::Vector(v) => f.write_str(&format_value(&Value::Vector(*v))),
         }
     }
 }

@@ -464,7 +464,7 @@ mod tests {
             messages(&r, Level::Warning),
             [
                 "invalid numeric result, kept as NaN: -8 ^ 0.5 is NaN",
-                "invalid numeric result, kept as NaN: 10 ^ 400 is inf"
+                "invalid numeric result, kept as NaN: 10 ^ 400 is Infinity"
             ]
         );
     }

@@ -17,6 +17,7 @@ use std::sync::{Arc, RwLock};
 use locus_kernel::{Point3, Vector3};
 use locus_runtime::{
     DataType, NodeConfig, NodeError, NodeRegistry, NodeType, Port, Prepared, Solve, Value,
+    format_value,
 };
 
 use super::set_operand;
@@ -171,14 +172,12 @@ pub fn evaluate() -> NodeType {
             let state = s
                 .prepared::<EvaluateState>()
                 .ok_or_else(|| NodeError("internal: the node was not prepared".to_owned()))?;
+            // F is a Text port, so the runtime casts what is wired in; when the graph names
+            // the inputs, F is a generic port and other values are written as text here, the
+            // same way.
             let source = match s.value(0) {
                 Some(Value::Text(t)) => t,
-                Some(other) => {
-                    return Err(NodeError(format!(
-                        "the expression F must be a Text, not a {}",
-                        other.data_type()
-                    )));
-                }
+                Some(other) => format_value(&other),
                 None => return Ok(()),
             };
             let program = state.program(&source)?;
@@ -462,6 +461,12 @@ mod tests {
             .input(DataTree::from_item(4.0))
             .run();
         assert_eq!(numbers(&r.outputs[0]), [10.0]);
+        let r = NodeCall::new(&evaluate())
+            .input_names(&["F", "x"])
+            .input(DataTree::from_item(7.0))
+            .input(DataTree::from_item(3.0))
+            .run();
+        assert_eq!(numbers(&r.outputs[0]), [7.0]);
         let r = NodeCall::new(&evaluate())
             .input_names(&["a", "b"])
             .input(DataTree::from_item(2.0))

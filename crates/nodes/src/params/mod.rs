@@ -7,6 +7,7 @@
 //! the way in (a failed cast is an error naming the item, which becomes null).
 
 pub mod curve;
+pub mod geometry;
 pub mod primitive;
 
 use locus_runtime::NodeRegistry;
@@ -14,5 +15,6 @@ use locus_runtime::NodeRegistry;
 /// Registers every Params node type.
 pub fn register(registry: &mut NodeRegistry) {
     primitive::register(registry);
+    geometry::register(registry);
     curve::register(registry);
 }

@@ -162,6 +162,41 @@ mod tests {
     }
 
     #[test]
+    fn items_are_cast_on_the_way_in() {
+        let mixed = DataTree::from_list(vec![
+            Value::Text("2.5".to_owned()),
+            Value::Integer(3),
+            Value::Boolean(true),
+        ]);
+        let r = NodeCall::new(&number()).input(mixed).run();
+        assert_eq!(r.outputs[0], DataTree::from_list(vec![2.5, 3.0, 1.0]));
+        let r = NodeCall::new(&boolean())
+            .input(DataTree::from_list(vec![0.0, 2.0]))
+            .run();
+        assert_eq!(r.outputs[0], DataTree::from_list(vec![false, true]));
+        let r = NodeCall::new(&domain())
+            .input(DataTree::from_item(5.0))
+            .run();
+        assert_eq!(r.outputs[0], DataTree::from_item(Interval::new(0.0, 5.0)));
+    }
+
+    #[test]
+    fn a_failed_cast_is_an_error_and_a_null() {
+        let r = NodeCall::new(&number())
+            .input(DataTree::from_list(vec!["abc".to_owned(), "1".to_owned()]))
+            .run();
+        let out: Vec<_> = r.outputs[0].values().collect();
+        assert_eq!(out, [None, Some(Value::Number(1.0))]);
+        assert_eq!(
+            r.messages
+                .iter()
+                .filter(|m| m.level == Level::Error)
+                .count(),
+            1
+        );
+    }
+
+    #[test]
     fn a_parameter_without_data_warns() {
         let r = NodeCall::new(&number()).run();
         assert!(r.outputs[0].is_empty());

@@ -1,0 +1,158 @@
+//! Vector: points, vectors and planes (Grasshopper's Vector tab).
+//!
+//! Every node here computes with the kernel's [`Point3`](locus_kernel::Point3),
+//! [`Vector3`](locus_kernel::Vector3) and [`Plane`](locus_kernel::Plane). Bad input never
+//! panics: a NaN or infinite coordinate, a zero-length vector where a direction is needed, or
+//! collinear points where a plane is needed give an error on the node for that item, and a null
+//! in its outputs.
+//!
+//! Vector addition, subtraction and scaling by a number have no nodes of their own here, as in
+//! Grasshopper: Maths › Addition, Subtraction and Multiplication take vectors and points, and
+//! [Amplitude](vectors::amplitude) sets a vector's length.
+
+pub mod plane;
+pub mod point;
+pub mod products;
+pub mod pull;
+pub mod vectors;
+
+use locus_kernel::{Point3, Vector3};
+use locus_runtime::{NodeError, NodeRegistry, Solve};
+
+/// Registers every Vector node type.
+pub fn register(registry: &mut NodeRegistry) {
+    point::register(registry);
+    pull::register(registry);
+    vectors::register(registry);
+    products::register(registry);
+    plane::register(registry);
+}
+
+/// `x`, or an error saying that `what` is not a finite number.
+pub(crate) fn finite_number(x: f64, what: &str) -> Result<f64, NodeError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(NodeError(format!("{what} is not a finite number ({x})")))
+    }
+}
+
+/// `p`, or an error saying that `what` has a NaN or infinite coordinate.
+pub(crate) fn finite_point(p: Point3, what: &str) -> Result<Point3, NodeError> {
+    if p.is_finite() {
+        Ok(p)
+    } else {
+        Err(NodeError(format!(
+            "{what} has a coordinate that is not finite"
+        )))
+    }
+}
+
+/// `v`, or an error saying that `what` has a NaN or infinite component.
+pub(crate) fn finite_vector(v: Vector3, what: &str) -> Result<Vector3, NodeError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(NodeError(format!(
+            "{what} has a component that is not finite"
+        )))
+    }
+}
+
+/// Warns, for nodes that take geometry apart, that `what` has a NaN or infinite coordinate:
+/// the numbers are still written (as NaN or infinity) so that lists stay aligned.
+pub(crate) fn warn_unless_finite(s: &mut Solve<'_>, finite: bool, what: &str) {
+    if !finite {
+        s.warning(format!(
+            "{what} has a coordinate that is not finite; its numbers are not finite either"
+        ));
+    }
+}
+
+/// The unit vector of `v`, or an error naming `what` when it has zero length or is not finite.
+pub(crate) fn unit(v: Vector3, what: &str) -> Result<Vector3, NodeError> {
+    finite_vector(v, what)?
+        .try_normalize()
+        .ok_or_else(|| NodeError(format!("{what} has zero length and no direction")))
+}
+
+#[cfg(test)]
+pub(crate) mod test_support {
+    //! Helpers for the tests of the Vector, Transform and geometry Params nodes.
+
+    use locus_runtime::{DataTree, Item, Level, NodeCallResult, Value};
+
+    /// The items of an output tree as `T`, in order, `None` for nulls (panics on another type,
+    /// which fails the test).
+    pub(crate) fn items<T: Item + std::fmt::Debug>(tree: &DataTree) -> Vec<Option<T>> {
+        tree.values()
+            .map(|v| {
+                v.map(|v| {
+                    v.get::<T>()
+                        .unwrap_or_else(|| panic!("expected a {}, got {v:?}", T::TYPE))
+                })
+            })
+            .collect()
+    }
+
+    /// The only item of output `output` (panics unless there is exactly one non-null item).
+    pub(crate) fn only<T: Item + std::fmt::Debug>(result: &NodeCallResult, output: usize) -> T {
+        let all = items::<T>(&result.outputs[output]);
+        assert_eq!(all.len(), 1, "expected one item, got {all:?}");
+        all.into_iter()
+            .next()
+            .flatten()
+            .unwrap_or_else(|| panic!("output {output} is null; messages: {:?}", result.messages))
+    }
+
+    /// The only value of output `output`, whatever its type.
+    pub(crate) fn only_value(result: &NodeCallResult, output: usize) -> Value {
+        let all: Vec<Option<Value>> = result.outputs[output].values().collect();
+        assert_eq!(all.len(), 1, "expected one item, got {all:?}");
+        all.into_iter()
+            .next()
+            .flatten()
+            .unwrap_or_else(|| panic!("output {output} is null; messages: {:?}", result.messages))
+    }
+
+    /// Whether output `output` holds exactly one item and it is null.
+    pub(crate) fn is_null(result: &NodeCallResult, output: usize) -> bool {
+        let all: Vec<Option<Value>> = result.outputs[output].values().collect();
+        all.len() == 1 && all[0].is_none()
+    }
+
+    /// The texts of the messages of one level.
+    pub(crate) fn messages(result: &NodeCallResult, level: Level) -> Vec<String> {
+        result
+            .messages
+            .iter()
+            .filter(|m| m.level == level)
+            .map(|m| m.text.clone())
+            .collect()
+    }
+
+    /// Asserts that the call reported exactly one error and that it contains `part`.
+    pub(crate) fn assert_error(result: &NodeCallResult, part: &str) {
+        let errors = messages(result, Level::Error);
+        assert_eq!(
+            errors.len(),
+            1,
+            "expected one error, got {:?}",
+            result.messages
+        );
+        assert!(
+            errors[0].contains(part),
+            "error {:?} does not mention {part:?}",
+            errors[0]
+        );
+    }
+
+    /// Asserts that the call reported no message at all.
+    pub(crate) fn assert_clean(result: &NodeCallResult) {
+        assert!(
+            result.messages.is_empty(),
+            "unexpected messages: {:?}",
+            result.messages
+        );
+    }
+}
