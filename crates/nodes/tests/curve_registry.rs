@@ -1,0 +1,55 @@
+//! Every Curve node and the Curve parameter are registered under their ids, and the Curve
+//! category holds no node that is not listed here.
+
+use locus_nodes::curve::{analysis, division, primitive, spline, util};
+use locus_nodes::params;
+use locus_runtime::NodeRegistry;
+
+#[test]
+fn curve_ids_are_registered() {
+    let mut registry = NodeRegistry::new();
+    locus_nodes::register(&mut registry);
+    let ids = [
+        primitive::LINE,
+        primitive::CIRCLE,
+        primitive::ARC,
+        spline::POLYLINE,
+        spline::BEZIER_SPAN,
+        spline::NURBS_CURVE,
+        spline::NURBS_CURVE_PWK,
+        spline::INTERPOLATE,
+        spline::KNOT_VECTOR,
+        analysis::CONTROL_POINTS,
+        analysis::EVALUATE_CURVE,
+        analysis::CURVATURE,
+        analysis::CURVE_DOMAIN,
+        analysis::END_POINTS,
+        analysis::LENGTH,
+        analysis::EVALUATE_LENGTH,
+        analysis::CURVE_CLOSEST_POINT,
+        analysis::CURVE_CONTINUITY,
+        division::DIVIDE_CURVE,
+        division::DIVIDE_LENGTH,
+        division::SHATTER,
+        util::FLIP_CURVE,
+        util::SPLIT_CURVE,
+    ];
+    for id in ids {
+        let t = registry
+            .get(id)
+            .unwrap_or_else(|| panic!("{id} is not registered"));
+        assert_eq!(t.category, "Curve", "{id}");
+    }
+    let in_category = registry.iter().filter(|t| t.category == "Curve").count();
+    assert_eq!(in_category, ids.len());
+    let curve_param = registry
+        .get(params::curve::CURVE)
+        .expect("the Curve parameter is registered");
+    assert_eq!(
+        (
+            curve_param.category.as_str(),
+            curve_param.subcategory.as_str()
+        ),
+        ("Params", "Geometry")
+    );
+}
