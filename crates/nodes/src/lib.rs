@@ -42,6 +42,7 @@
 //! - Util ([`transform::util`]): Transform, Compound \[Comp\], Inverse Transform \[Inverse\],
 //!   Deconstruct Transform \[DeXform\], Construct Transform \[Xform\]; all geometry goes
 //!   through [`transform::apply::transform_value`].
+//!
 //! **Curve** ([`curve`])
 //! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc.
 //! - Spline ([`curve::spline`]): PolyLine \[PLine\], Bezier Span \[BzSpan\], Nurbs Curve

@@ -7,6 +7,7 @@ mod call;
 mod cast;
 mod cast_geometry;
 mod cast_rules;
+mod catalogue;
 mod check;
 mod collect;
 mod compare;
