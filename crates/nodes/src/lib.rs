@@ -59,6 +59,8 @@ pub mod curve;
 pub mod expression;
 pub mod maths;
 pub mod params;
+pub mod sets;
+pub mod surface;
 pub mod transform;
 pub mod vector;
 
@@ -71,4 +73,6 @@ pub fn register(registry: &mut NodeRegistry) {
     vector::register(registry);
     transform::register(registry);
     curve::register(registry);
+    surface::register(registry);
+    sets::register(registry);
 }

@@ -6,9 +6,11 @@
 //! branches and nulls pass through unchanged; every item is cast to the parameter's type on
 //! the way in (a failed cast is an error naming the item, which becomes null).
 
+pub mod brep;
 pub mod curve;
 pub mod geometry;
 pub mod primitive;
+pub mod surface;
 
 use locus_runtime::NodeRegistry;
 
@@ -17,4 +19,6 @@ pub fn register(registry: &mut NodeRegistry) {
     primitive::register(registry);
     geometry::register(registry);
     curve::register(registry);
+    surface::register(registry);
+    brep::register(registry);
 }

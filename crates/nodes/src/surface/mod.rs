@@ -1,0 +1,22 @@
+//! Surface: Grasshopper's Surface tab — primitives (Sphere, Cylinder, Cone, Plane Surface),
+//! freeform surfaces, analysis (evaluation, closest points, curvature), utilities (Divide
+//! Surface, Isocurve), boxes and B-reps.
+
+pub mod analysis;
+pub mod box_nodes;
+pub mod brep;
+pub mod freeform;
+pub mod primitive;
+pub mod util;
+
+use locus_runtime::NodeRegistry;
+
+/// Registers every Surface node type.
+pub fn register(registry: &mut NodeRegistry) {
+    primitive::register(registry);
+    freeform::register(registry);
+    analysis::register(registry);
+    util::register(registry);
+    box_nodes::register(registry);
+    brep::register(registry);
+}
