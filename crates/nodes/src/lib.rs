@@ -61,6 +61,8 @@ pub mod maths;
 pub mod params;
 pub mod sets;
 pub mod surface;
+#[cfg(test)]
+mod test_support;
 pub mod transform;
 pub mod vector;
 

@@ -146,82 +146,12 @@ pub(crate) fn set_curve_length_domain(s: &mut Solve<'_>, first: usize, curve: Cu
 
 #[cfg(test)]
 pub(crate) mod test_support {
-    //! Helpers for curve node tests.
+    //! Helpers for curve node tests: the crate's [`crate::test_support`] and curve trees.
 
-    use locus_kernel::{Curve, Interval, Point3, Vector3};
-    use locus_runtime::{DataTree, Level, NodeCallResult, Shared, Value};
+    use locus_kernel::{Curve, Point3};
+    use locus_runtime::{DataTree, Shared};
 
-    /// The items of an output tree, `None` for nulls.
-    pub(crate) fn values(tree: &DataTree) -> Vec<Option<Value>> {
-        tree.values().collect()
-    }
-
-    /// The numbers of an output tree (panics on another item, which fails the test).
-    pub(crate) fn numbers(tree: &DataTree) -> Vec<f64> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Number(x)) => x,
-                other => panic!("expected a number, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The points of an output tree.
-    pub(crate) fn points(tree: &DataTree) -> Vec<Point3> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Point(p)) => p,
-                other => panic!("expected a point, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The vectors of an output tree.
-    pub(crate) fn vectors(tree: &DataTree) -> Vec<Vector3> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Vector(p)) => p,
-                other => panic!("expected a vector, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The curves of an output tree.
-    pub(crate) fn curves(tree: &DataTree) -> Vec<Shared<Curve>> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Curve(c)) => c,
-                other => panic!("expected a curve, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The domains of an output tree.
-    pub(crate) fn domains(tree: &DataTree) -> Vec<Interval> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Domain(d)) => d,
-                other => panic!("expected a domain, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The texts of the messages of one level.
-    pub(crate) fn messages(result: &NodeCallResult, level: Level) -> Vec<String> {
-        result
-            .messages
-            .iter()
-            .filter(|m| m.level == level)
-            .map(|m| m.text.clone())
-            .collect()
-    }
-
-    /// The one error message of a call (panics when there is not exactly one).
-    pub(crate) fn single_error(result: &NodeCallResult) -> String {
-        let errors = messages(result, Level::Error);
-        assert_eq!(errors.len(), 1, "expected one error, got {errors:?}");
-        errors[0].clone()
-    }
+    pub(crate) use crate::test_support::*;
 
     /// A tree of one curve item.
     pub(crate) fn curve_tree(curve: impl Into<Curve>) -> DataTree {

@@ -59,42 +59,6 @@ pub(crate) fn set_operand(s: &mut Solve<'_>, output: usize, r: Operand, why: Opt
 
 #[cfg(test)]
 pub(crate) mod test_support {
-    //! Helpers for node tests.
-
-    use locus_runtime::{DataTree, Level, NodeCallResult, Value};
-
-    /// The items of an output tree, in order, `None` for nulls.
-    pub(crate) fn values(tree: &DataTree) -> Vec<Option<Value>> {
-        tree.values().collect()
-    }
-
-    /// The numbers of an output tree (panics on a non-number, which fails the test).
-    pub(crate) fn numbers(tree: &DataTree) -> Vec<f64> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Number(x)) => x,
-                other => panic!("expected a number, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The booleans of an output tree.
-    pub(crate) fn booleans(tree: &DataTree) -> Vec<bool> {
-        tree.values()
-            .map(|v| match v {
-                Some(Value::Boolean(b)) => b,
-                other => panic!("expected a boolean, got {other:?}"),
-            })
-            .collect()
-    }
-
-    /// The texts of the messages of one level.
-    pub(crate) fn messages(result: &NodeCallResult, level: Level) -> Vec<String> {
-        result
-            .messages
-            .iter()
-            .filter(|m| m.level == level)
-            .map(|m| m.text.clone())
-            .collect()
-    }
+    //! Helpers for node tests: the crate's [`crate::test_support`].
+    pub(crate) use crate::test_support::*;
 }
