@@ -4,7 +4,7 @@
 //!
 //! Every failing case is named and all failures are reported together.
 
-mod shared_data;
+mod support;
 
 use std::f64::consts::PI;
 
@@ -174,7 +174,7 @@ fn replay(case: &Value) -> Vec<String> {
 
 #[test]
 fn every_transform_case_matches_opennurbs() {
-    let oracle = shared_data::read_oracle("opennurbs-cases.json");
+    let oracle = support::load_oracle("opennurbs-cases.json");
     let cases = oracle["transforms"]
         .as_array()
         .expect("the oracle has a `transforms` array");
@@ -201,7 +201,7 @@ fn every_transform_case_matches_opennurbs() {
 #[test]
 fn tolerance_check_is_not_vacuous() {
     // A wrong matrix must be reported: replay a case with its expected matrix perturbed.
-    let oracle = shared_data::read_oracle("opennurbs-cases.json");
+    let oracle = support::load_oracle("opennurbs-cases.json");
     let mut case = oracle["transforms"][0].clone();
     let entry = case["matrix"][0][3].as_f64().expect("a number");
     case["matrix"][0][3] = Value::from(entry + 1e-6);
