@@ -22,8 +22,14 @@
 //! - Script ([`maths::script`]): Expression, Evaluate \[Eval\]; the formula language is
 //!   [`expression`].
 //!
-//! **Sets**
-//! - Sequence ([`maths::sequence`]): Range, Series.
+//! **Sets** ([`sets`])
+//! - List ([`sets::list`]): List Item \[Item\], List Length \[Lng\], Reverse List \[Rev\],
+//!   Shift List \[Shift\], Sort List \[Sort\], Dispatch.
+//! - Sequence ([`maths::sequence`], [`sets::sequence`]): Range, Series, Cull Pattern \[Cull\].
+//! - Tree ([`sets::tree`], [`sets::streams`]): Graft Tree \[Graft\], Flatten Tree
+//!   \[Flatten\], Simplify Tree \[Simplify\], Trim Tree \[Trim\], Shift Paths \[PShift\],
+//!   Flip Matrix \[Flip\], Path Mapper \[PathMapper\], Merge, Entwine, Explode Tree \[BANG!\],
+//!   Tree Branch \[Branch\], Tree Item \[Item\], Tree Statistics \[TStat\].
 //!
 //! **Vector** ([`vector`])
 //! - Point ([`vector::point`], [`vector::pull`]): Construct Point \[Pt\], Deconstruct

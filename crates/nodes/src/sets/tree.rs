@@ -198,9 +198,9 @@ pub const DEFAULT_SOURCE_MASK: &str = "{A;B}";
 /// The target mask a new Path Mapper node starts with.
 pub const DEFAULT_TARGET_MASK: &str = "{A;B}";
 
-/// Path Mapper \[PMapper\]: paths and item indices rewritten by lexical masks.
+/// Path Mapper \[PathMapper\]: paths and item indices rewritten by lexical masks.
 pub fn path_mapper() -> NodeType {
-    tree_node(PATH_MAPPER, "Path Mapper", "PMapper")
+    tree_node(PATH_MAPPER, "Path Mapper", "PathMapper")
         .description(
             "Rewrites the paths (and item indices) of a tree by a source and a target mask: \
              {A;B}(i) → {B;A}(i) swaps two levels, {A;B} → {A} merges the last level, \
