@@ -101,9 +101,7 @@ pub fn list_item() -> NodeType {
 /// List Length \[Lng\]: the number of items of a list.
 pub fn list_length() -> NodeType {
     list_node(LIST_LENGTH, "List Length", "Lng")
-        .description(
-            "Counts the items of a list, null items included; an empty list has length 0.",
-        )
+        .description("Counts the items of a list, null items included; an empty list has length 0.")
         .input(list_input("The list to measure, of any type.").optional())
         .output(
             Port::new("Length", "L", DataType::Integer)
@@ -205,7 +203,11 @@ pub fn sort_list() -> NodeType {
                 .optional()
                 .doc("Values to sort along with the keys, one per key, of any type; optional."),
         )
-        .output(list_output_named("Keys", "K", "The keys in ascending order."))
+        .output(list_output_named(
+            "Keys",
+            "K",
+            "The keys in ascending order.",
+        ))
         .output(list_output_named(
             "Values A",
             "A",
@@ -253,10 +255,22 @@ fn sort_keys(branch: &Branch) -> Result<Vec<Key<'_>>, NodeError> {
     let null = |i: usize| branch.is_null(i);
     let keys: Vec<Key<'_>> = match branch.column() {
         Column::Number(v) => (0..v.len())
-            .map(|i| if null(i) { Key::Null } else { Key::Number(v[i]) })
+            .map(|i| {
+                if null(i) {
+                    Key::Null
+                } else {
+                    Key::Number(v[i])
+                }
+            })
             .collect(),
         Column::Integer(v) => (0..v.len())
-            .map(|i| if null(i) { Key::Null } else { Key::Number(v[i] as f64) })
+            .map(|i| {
+                if null(i) {
+                    Key::Null
+                } else {
+                    Key::Number(v[i] as f64)
+                }
+            })
             .collect(),
         Column::Boolean(v) => (0..v.len())
             .map(|i| {
@@ -360,7 +374,10 @@ pub fn dispatch() -> NodeType {
 }
 
 /// The boolean pattern of list input `input`, nulls as false.
-pub(crate) fn pattern_of(s: &locus_runtime::Solve<'_>, input: usize) -> Result<Vec<bool>, NodeError> {
+pub(crate) fn pattern_of(
+    s: &locus_runtime::Solve<'_>,
+    input: usize,
+) -> Result<Vec<bool>, NodeError> {
     let list = s.list::<bool>(input)?;
     Ok(list.iter().map(|b| b.copied().unwrap_or(false)).collect())
 }
@@ -395,8 +412,14 @@ mod tests {
         let r = item("{0}:[10, 20, 30]", 1, true);
         assert_clean(&r);
         assert_eq!(r.outputs[0].to_text(), "{0}:[20]");
-        assert_eq!(item("{0}:[10, 20, 30]", 4, true).outputs[0].to_text(), "{0}:[20]");
-        assert_eq!(item("{0}:[10, 20, 30]", -1, true).outputs[0].to_text(), "{0}:[30]");
+        assert_eq!(
+            item("{0}:[10, 20, 30]", 4, true).outputs[0].to_text(),
+            "{0}:[20]"
+        );
+        assert_eq!(
+            item("{0}:[10, 20, 30]", -1, true).outputs[0].to_text(),
+            "{0}:[30]"
+        );
         let r = item("{0}:[10, 20, 30]", 3, false);
         assert_eq!(r.outputs[0].to_text(), "{0}:[null]");
         assert_eq!(
@@ -507,7 +530,9 @@ mod tests {
     fn sort_list_sorts_numbers_with_values_stably() {
         let r = sort(
             tree("{0}:[3, 1, 2, 1, NaN, null, -5]"),
-            Some(generic("{0}:[\"c\", \"a1\", \"b\", \"a2\", \"nan\", \"null\", \"neg\"]")),
+            Some(generic(
+                "{0}:[\"c\", \"a1\", \"b\", \"a2\", \"nan\", \"null\", \"neg\"]",
+            )),
         );
         assert_clean(&r);
         assert_eq!(r.outputs[0].to_text(), "{0}:[-5, 1, 1, 2, 3, NaN, null]");

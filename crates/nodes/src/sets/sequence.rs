@@ -78,7 +78,10 @@ mod tests {
     fn mixed_types_and_nulls_are_culled_like_any_item() {
         let l = generic("{0}:[\"a\", null, true, {1, 2, 3}]");
         assert_eq!(cull(l.clone(), vec![false, true]), "{0}:[null, {1, 2, 3}]");
-        assert_eq!(cull(l, vec![true, true, false]), "{0}:[\"a\", null, {1, 2, 3}]");
+        assert_eq!(
+            cull(l, vec![true, true, false]),
+            "{0}:[\"a\", null, {1, 2, 3}]"
+        );
     }
 
     #[test]

@@ -308,7 +308,10 @@ mod tests {
             .input(generic("{0}:[\"x\", null]"))
             .run();
         assert_clean(&r);
-        assert_eq!(r.outputs[0].to_text(), "{0;0}:[1, 2, 3] {0;2}:[\"x\", null]");
+        assert_eq!(
+            r.outputs[0].to_text(),
+            "{0;0}:[1, 2, 3] {0;2}:[\"x\", null]"
+        );
         let r = NodeCall::new(&entwine())
             .setting("flatten", Value::Boolean(false))
             .input(tree("{0}:[1, 2] {1}:[3]"))
@@ -334,7 +337,9 @@ mod tests {
         assert_eq!(r.outputs[1].to_text(), "{1}:[]");
         assert_eq!(
             messages(&r, Level::Warning),
-            ["the tree has 4 branches but the node has 2 outputs: branches {2} to {3} are left out"]
+            [
+                "the tree has 4 branches but the node has 2 outputs: branches {2} to {3} are left out"
+            ]
         );
         let r = NodeCall::new(&explode_tree()).input(tree("{4}:[1]")).run();
         assert_eq!(r.outputs[0].to_text(), "{4}:[1]");
@@ -346,7 +351,10 @@ mod tests {
         let t = "{0;0}:[1, 2] {0;1}:[3] {1}:[4]";
         let r = NodeCall::new(&tree_branch())
             .input(tree(t))
-            .input(DataTree::from_list(vec!["{0;1}".to_owned(), "0;0".to_owned()]))
+            .input(DataTree::from_list(vec![
+                "{0;1}".to_owned(),
+                "0;0".to_owned(),
+            ]))
             .run();
         assert_clean(&r);
         assert_eq!(r.outputs[0].to_text(), "{0;0}:[1, 2] {0;1}:[3]");
@@ -377,8 +385,14 @@ mod tests {
         let r = tree_item_at("{0;0}", 1, true);
         assert_clean(&r);
         assert_eq!(r.outputs[0].to_text(), "{0}:[\"b\"]");
-        assert_eq!(tree_item_at("{0;0}", 5, true).outputs[0].to_text(), "{0}:[null]");
-        assert_eq!(tree_item_at("{0;0}", -3, true).outputs[0].to_text(), "{0}:[1]");
+        assert_eq!(
+            tree_item_at("{0;0}", 5, true).outputs[0].to_text(),
+            "{0}:[null]"
+        );
+        assert_eq!(
+            tree_item_at("{0;0}", -3, true).outputs[0].to_text(),
+            "{0}:[1]"
+        );
         let r = tree_item_at("{0;0}", 3, false);
         assert_eq!(r.outputs[0].to_text(), "{0}:[null]");
         assert_eq!(
@@ -399,7 +413,10 @@ mod tests {
             .input(tree("{0;0}:[1, null] {0;1}:[] {2}:[3]"))
             .run();
         assert_clean(&r);
-        assert_eq!(r.outputs[0].to_text(), "{0}:[\"{0;0}\", \"{0;1}\", \"{2}\"]");
+        assert_eq!(
+            r.outputs[0].to_text(),
+            "{0}:[\"{0;0}\", \"{0;1}\", \"{2}\"]"
+        );
         assert_eq!(r.outputs[1].to_text(), "{0}:[2, 0, 1]");
         assert_eq!(r.outputs[2].to_text(), "{0}:[3]");
         let r = NodeCall::new(&tree_statistics()).run();

@@ -160,10 +160,9 @@ pub fn shift_paths() -> NodeType {
              order; a path that loses all its indices becomes {0}.",
         )
         .input(tree_port("Data", "D", "The tree to modify, of any type."))
-        .input(
-            Port::new("Offset", "O", DataType::Integer)
-                .doc("The number of indices to remove: negative from the end, positive from the front."),
-        )
+        .input(Port::new("Offset", "O", DataType::Integer).doc(
+            "The number of indices to remove: negative from the end, positive from the front.",
+        ))
         .output(tree_port("Data", "D", "The tree with shifted paths."))
         .solve(|s| {
             let offset = *s.item::<i64>(1)?;
@@ -264,7 +263,11 @@ mod tests {
         r.outputs[0].to_text()
     }
 
-    fn run_with(node: &NodeType, input: DataTree, second: DataTree) -> locus_runtime::NodeCallResult {
+    fn run_with(
+        node: &NodeType,
+        input: DataTree,
+        second: DataTree,
+    ) -> locus_runtime::NodeCallResult {
         NodeCall::new(node).input(input).input(second).run()
     }
 
@@ -299,7 +302,11 @@ mod tests {
         );
         assert_clean(&r);
         assert_eq!(r.outputs[0].to_text(), "{2;7}:[1, 2]");
-        let r = run_with(&flatten_tree(), tree("{0;0}:[1]"), DataTree::from_item(3_i64));
+        let r = run_with(
+            &flatten_tree(),
+            tree("{0;0}:[1]"),
+            DataTree::from_item(3_i64),
+        );
         assert_eq!(r.outputs[0].to_text(), "{3}:[1]");
         assert_eq!(run(&flatten_tree(), "{0;1}:[] {0;2}:[]"), "{0}:[]");
     }
@@ -394,7 +401,11 @@ mod tests {
     fn path_mapper_with_the_reference_masks() {
         let t = "{0;0}:[1, 2] {0;1}:[3, 4] {1;0}:[5, 6]";
         for (source, target, expected) in [
-            ("{A;B}(i)", "{B;A}(i)", "{0;0}:[1, 2] {0;1}:[5, 6] {1;0}:[3, 4]"),
+            (
+                "{A;B}(i)",
+                "{B;A}(i)",
+                "{0;0}:[1, 2] {0;1}:[5, 6] {1;0}:[3, 4]",
+            ),
             ("{A;B}(i)", "{A}", "{0}:[1, 2, 3, 4] {1}:[5, 6]"),
             ("{A;B}(i)", "{A}(i)", "{0}:[3, 4] {1}:[5, 6]"),
             (
@@ -404,7 +415,11 @@ mod tests {
             ),
             ("{A;B}(i)", "{i}", "{0}:[1, 3, 5] {1}:[2, 4, 6]"),
             ("{A;B}", "{path_index}", "{0}:[1, 2] {1}:[3, 4] {2}:[5, 6]"),
-            ("{A;B}(i)", "{A;B}(item_count-1-i)", "{0;0}:[2, 1] {0;1}:[4, 3] {1;0}:[6, 5]"),
+            (
+                "{A;B}(i)",
+                "{A;B}(item_count-1-i)",
+                "{0;0}:[2, 1] {0;1}:[4, 3] {1;0}:[6, 5]",
+            ),
         ] {
             let r = mapped(source, target, t);
             assert_clean(&r);
@@ -426,8 +441,10 @@ mod tests {
         let r = mapped("{A;B}", "{C}", "{0;0}:[1]");
         assert_eq!(
             messages(&r, Level::Error),
-            ["invalid mask `{C}` at column 2: unknown name `C` (known: A, B, item_count, \
-              path_count, path_index)"]
+            [
+                "invalid mask `{C}` at column 2: unknown name `C` (known: A, B, item_count, \
+              path_count, path_index)"
+            ]
         );
         let r = mapped("{A;B}", "{A}", "{0}:[1]");
         assert_eq!(
