@@ -216,7 +216,7 @@ fn maths_and_params_ids_are_registered() {
 #[test]
 fn sets_ids_are_registered() {
     use locus_nodes::maths::sequence;
-    use locus_nodes::sets::{list, sequence as cull, streams, tree};
+    use locus_nodes::sets::{list, list_split, sequence as cull, streams, tree};
     let registry = registry();
     let ids = [
         list::LIST_ITEM,
@@ -225,7 +225,13 @@ fn sets_ids_are_registered() {
         list::SHIFT_LIST,
         list::SORT_LIST,
         list::DISPATCH,
+        list_split::SPLIT_LIST,
+        list_split::PARTITION_LIST,
         cull::CULL_PATTERN,
+        cull::CULL_INDEX,
+        cull::CULL_NTH,
+        cull::REPEAT_DATA,
+        cull::DUPLICATE_DATA,
         sequence::RANGE,
         sequence::SERIES,
         tree::GRAFT_TREE,

@@ -1,8 +1,9 @@
 //! Sets: Grasshopper's Sets tab — lists and trees.
 //!
-//! - List ([`list`]): List Item, List Length, Reverse List, Shift List, Sort List, Dispatch.
-//! - Sequence ([`sequence`]): Cull Pattern (Range and Series are in
-//!   [`crate::maths::sequence`]).
+//! - List ([`list`], [`list_split`]): List Item, List Length, Reverse List, Shift List, Sort
+//!   List, Dispatch, Split List, Partition List.
+//! - Sequence ([`sequence`]): Cull Pattern, Cull Index, Cull Nth, Repeat Data, Duplicate Data
+//!   (Range and Series are in [`crate::maths::sequence`]).
 //! - Tree ([`tree`], [`streams`]): Graft, Flatten, Simplify, Trim, Shift Paths, Flip Matrix,
 //!   Path Mapper; Merge, Entwine, Explode Tree, Tree Branch, Tree Item, Tree Statistics.
 //!
@@ -19,6 +20,7 @@
 //! is the path `{3}`).
 
 pub mod list;
+pub mod list_split;
 pub mod sequence;
 pub mod streams;
 pub mod tree;
@@ -28,6 +30,7 @@ use locus_runtime::{NodeError, NodeRegistry, TreePath};
 /// Registers every Sets node type.
 pub fn register(registry: &mut NodeRegistry) {
     list::register(registry);
+    list_split::register(registry);
     sequence::register(registry);
     tree::register(registry);
     streams::register(registry);
