@@ -457,4 +457,37 @@ mod tests {
             ["cannot map path {0}: path index -1 is negative"]
         );
     }
+
+    #[test]
+    fn every_structure_node_keeps_mixed_types_nulls_and_empty_branches() {
+        let input = "{0;0}:[\"a\", null] {0;1}:[] {0;2}:[true, {1, 2, 3}]";
+        let one = |node: NodeType| {
+            let r = NodeCall::new(&node).input(generic(input)).run();
+            assert_clean(&r);
+            r.outputs[0].to_text()
+        };
+        assert_eq!(
+            one(graft_tree()),
+            "{0;0;0}:[\"a\"] {0;0;1}:[null] {0;1;0}:[] {0;2;0}:[true] {0;2;1}:[{1, 2, 3}]"
+        );
+        assert_eq!(one(flatten_tree()), "{0}:[\"a\", null, true, {1, 2, 3}]");
+        assert_eq!(
+            one(simplify_tree()),
+            "{0}:[\"a\", null] {1}:[] {2}:[true, {1, 2, 3}]"
+        );
+        assert_eq!(one(trim_tree()), "{0}:[\"a\", null, true, {1, 2, 3}]");
+        assert_eq!(
+            one(flip_matrix()),
+            "{0;0}:[\"a\", null, true] {0;1}:[null, null, {1, 2, 3}]"
+        );
+        assert_eq!(one(path_mapper()), input);
+        let r = NodeCall::new(&shift_paths())
+            .input(generic(input))
+            .input(DataTree::from_item(1_i64))
+            .run();
+        assert_eq!(
+            r.outputs[0].to_text(),
+            "{0}:[\"a\", null] {1}:[] {2}:[true, {1, 2, 3}]"
+        );
+    }
 }
