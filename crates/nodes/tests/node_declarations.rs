@@ -216,7 +216,7 @@ fn maths_and_params_ids_are_registered() {
 #[test]
 fn sets_ids_are_registered() {
     use locus_nodes::maths::sequence;
-    use locus_nodes::sets::{list, list_split, sequence as cull, streams, tree};
+    use locus_nodes::sets::{list, list_match, list_split, sequence as cull, streams, tree};
     let registry = registry();
     let ids = [
         list::LIST_ITEM,
@@ -227,6 +227,8 @@ fn sets_ids_are_registered() {
         list::DISPATCH,
         list_split::SPLIT_LIST,
         list_split::PARTITION_LIST,
+        list_match::LONGEST_LIST,
+        list_match::SHORTEST_LIST,
         cull::CULL_PATTERN,
         cull::CULL_INDEX,
         cull::CULL_NTH,
@@ -238,6 +240,7 @@ fn sets_ids_are_registered() {
         tree::FLATTEN_TREE,
         tree::SIMPLIFY_TREE,
         tree::TRIM_TREE,
+        tree::PRUNE_TREE,
         tree::SHIFT_PATHS,
         tree::FLIP_MATRIX,
         tree::PATH_MAPPER,

@@ -1,11 +1,11 @@
 //! Sets: Grasshopper's Sets tab — lists and trees.
 //!
-//! - List ([`list`], [`list_split`]): List Item, List Length, Reverse List, Shift List, Sort
-//!   List, Dispatch, Split List, Partition List.
+//! - List ([`list`], [`list_split`], [`list_match`]): List Item, List Length, Reverse List,
+//!   Shift List, Sort List, Dispatch, Split List, Partition List, Longest List, Shortest List.
 //! - Sequence ([`sequence`]): Cull Pattern, Cull Index, Cull Nth, Repeat Data, Duplicate Data
 //!   (Range and Series are in [`crate::maths::sequence`]).
-//! - Tree ([`tree`], [`streams`]): Graft, Flatten, Simplify, Trim, Shift Paths, Flip Matrix,
-//!   Path Mapper; Merge, Entwine, Explode Tree, Tree Branch, Tree Item, Tree Statistics.
+//! - Tree ([`tree`], [`streams`]): Graft, Flatten, Simplify, Trim, Prune, Shift Paths, Flip
+//!   Matrix, Path Mapper; Merge, Entwine, Explode Tree, Tree Branch, Tree Item, Tree Statistics.
 //!
 //! List nodes take generic data and keep it typed: items move between branches with
 //! [`Branch::gather`](locus_runtime::Branch::gather) and typed range copies, never one boxed
@@ -20,6 +20,7 @@
 //! is the path `{3}`).
 
 pub mod list;
+pub mod list_match;
 pub mod list_split;
 pub mod sequence;
 pub mod streams;
@@ -31,6 +32,7 @@ use locus_runtime::{NodeError, NodeRegistry, TreePath};
 pub fn register(registry: &mut NodeRegistry) {
     list::register(registry);
     list_split::register(registry);
+    list_match::register(registry);
     sequence::register(registry);
     tree::register(registry);
     streams::register(registry);

@@ -1,5 +1,5 @@
 //! Sets › Tree, the structure operations: Graft Tree, Flatten Tree, Simplify Tree, Trim Tree,
-//! Shift Paths, Flip Matrix and Path Mapper.
+//! Prune Tree, Shift Paths, Flip Matrix and Path Mapper.
 //!
 //! Each node calls the runtime's tree operation of the same name (`docs/data-trees.md` has
 //! their rules); the nodes add the ports, defaults and messages.
@@ -21,6 +21,8 @@ pub const FLATTEN_TREE: &str = "sets.flatten_tree";
 pub const SIMPLIFY_TREE: &str = "sets.simplify_tree";
 /// Id of [`trim_tree`].
 pub const TRIM_TREE: &str = "sets.trim_tree";
+/// Id of [`prune_tree`].
+pub const PRUNE_TREE: &str = "sets.prune_tree";
 /// Id of [`shift_paths`].
 pub const SHIFT_PATHS: &str = "sets.shift_paths";
 /// Id of [`flip_matrix`].
@@ -35,6 +37,7 @@ pub fn register(registry: &mut NodeRegistry) {
         flatten_tree(),
         simplify_tree(),
         trim_tree(),
+        prune_tree(),
         shift_paths(),
         flip_matrix(),
         path_mapper(),
@@ -146,6 +149,47 @@ pub fn trim_tree() -> NodeType {
             let mut t = s.tree(0)?.clone();
             t.trim(depth);
             s.set_tree(0, t);
+            Ok(())
+        })
+}
+
+/// Prune Tree \[Prune\]: branches with too few or too many items removed.
+pub fn prune_tree() -> NodeType {
+    tree_node(PRUNE_TREE, "Prune Tree", "Prune")
+        .description(
+            "Removes the branches of a tree that have fewer than N0 items or, when N1 is not 0, \
+             more than N1 items (null items count). The default N0 = 1 removes empty branches.",
+        )
+        .input(tree_port("Tree", "T", "The tree to prune, of any type."))
+        .input(
+            Port::new("Minimum", "N0", DataType::Integer)
+                .doc("Remove branches with fewer than N0 items, 0 or more; default 1.")
+                .default_value(1_i64),
+        )
+        .input(
+            Port::new("Maximum", "N1", DataType::Integer)
+                .doc(
+                    "Remove branches with more than N1 items, 0 or more (0 ignores the upper \
+                      limit); default 0.",
+                )
+                .default_value(0_i64),
+        )
+        .output(tree_port("Tree", "T", "The pruned tree."))
+        .solve(|s| {
+            let count = |input: usize, name: &str| -> Result<usize, NodeError> {
+                let n = *s.item::<i64>(input)?;
+                usize::try_from(n)
+                    .map_err(|_| NodeError(format!("{name} must be at least 0, not {n}")))
+            };
+            let min = count(1, "minimum N0")?;
+            let max = count(2, "maximum N1")?;
+            let kept = s
+                .tree(0)?
+                .branches()
+                .iter()
+                .filter(|(_, b)| b.len() >= min && (max == 0 || b.len() <= max))
+                .cloned();
+            s.set_tree(0, DataTree::from_branches(kept));
             Ok(())
         })
 }
@@ -488,6 +532,36 @@ mod tests {
         assert_eq!(
             r.outputs[0].to_text(),
             "{0}:[\"a\", null] {1}:[] {2}:[true, {1, 2, 3}]"
+        );
+    }
+
+    #[test]
+    fn prune_removes_small_and_large_branches() {
+        let t = "{0}:[] {1}:[1] {2}:[1, null] {3}:[1, 2, 3]";
+        let prune = |min: i64, max: i64| {
+            NodeCall::new(&prune_tree())
+                .input(tree(t))
+                .input(DataTree::from_item(min))
+                .input(DataTree::from_item(max))
+                .run()
+        };
+        assert_eq!(run(&prune_tree(), t), "{1}:[1] {2}:[1, null] {3}:[1, 2, 3]");
+        assert_eq!(
+            prune(2, 0).outputs[0].to_text(),
+            "{2}:[1, null] {3}:[1, 2, 3]"
+        );
+        assert_eq!(
+            prune(0, 2).outputs[0].to_text(),
+            "{0}:[] {1}:[1] {2}:[1, null]"
+        );
+        assert_eq!(prune(4, 0).outputs[0].to_text(), "");
+        assert_eq!(
+            messages(&prune(-1, 0), Level::Error),
+            ["minimum N0 must be at least 0, not -1"]
+        );
+        assert_eq!(
+            messages(&prune(0, -1), Level::Error),
+            ["maximum N1 must be at least 0, not -1"]
         );
     }
 }
