@@ -22,8 +22,18 @@
 //! - Script ([`maths::script`]): Expression, Evaluate \[Eval\]; the formula language is
 //!   [`expression`].
 //!
-//! **Sets**
-//! - Sequence ([`maths::sequence`]): Range, Series.
+//! **Sets** ([`sets`])
+//! - List ([`sets::list`]): List Item \[Item\], List Length \[Lng\], Reverse List \[Rev\],
+//!   Shift List \[Shift\], Sort List \[Sort\], Dispatch; ([`sets::list_split`]) Split List
+//!   \[Split\], Partition List \[Partition\]; ([`sets::list_match`]) Longest List \[Long\],
+//!   Shortest List \[Short\].
+//! - Sequence ([`maths::sequence`], [`sets::sequence`]): Range, Series, Cull Pattern \[Cull\],
+//!   Cull Index \[Cull i\], Cull Nth \[CullN\], Repeat Data \[Repeat\], Duplicate Data \[Dup\].
+//! - Tree ([`sets::tree`], [`sets::streams`]): Graft Tree \[Graft\], Flatten Tree
+//!   \[Flatten\], Simplify Tree \[Simplify\], Trim Tree \[Trim\], Prune Tree \[Prune\], Shift
+//!   Paths \[PShift\], Flip Matrix \[Flip\], Path Mapper \[PathMapper\], Merge, Entwine,
+//!   Explode Tree \[BANG!\], Tree Branch \[Branch\], Tree Item \[Item\], Tree Statistics
+//!   \[TStat\].
 //!
 //! **Vector** ([`vector`])
 //! - Point ([`vector::point`], [`vector::pull`]): Construct Point \[Pt\], Deconstruct

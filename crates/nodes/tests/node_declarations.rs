@@ -212,3 +212,48 @@ fn maths_and_params_ids_are_registered() {
         assert!(registry.get(id).is_some(), "{id} is not registered");
     }
 }
+
+#[test]
+fn sets_ids_are_registered() {
+    use locus_nodes::maths::sequence;
+    use locus_nodes::sets::{list, list_match, list_split, sequence as cull, streams, tree};
+    let registry = registry();
+    let ids = [
+        list::LIST_ITEM,
+        list::LIST_LENGTH,
+        list::REVERSE_LIST,
+        list::SHIFT_LIST,
+        list::SORT_LIST,
+        list::DISPATCH,
+        list_split::SPLIT_LIST,
+        list_split::PARTITION_LIST,
+        list_match::LONGEST_LIST,
+        list_match::SHORTEST_LIST,
+        cull::CULL_PATTERN,
+        cull::CULL_INDEX,
+        cull::CULL_NTH,
+        cull::REPEAT_DATA,
+        cull::DUPLICATE_DATA,
+        sequence::RANGE,
+        sequence::SERIES,
+        tree::GRAFT_TREE,
+        tree::FLATTEN_TREE,
+        tree::SIMPLIFY_TREE,
+        tree::TRIM_TREE,
+        tree::PRUNE_TREE,
+        tree::SHIFT_PATHS,
+        tree::FLIP_MATRIX,
+        tree::PATH_MAPPER,
+        streams::MERGE,
+        streams::ENTWINE,
+        streams::EXPLODE_TREE,
+        streams::TREE_BRANCH,
+        streams::TREE_ITEM,
+        streams::TREE_STATISTICS,
+    ];
+    for id in ids {
+        assert!(registry.get(id).is_some(), "{id} is not registered");
+    }
+    let sets = registry.iter().filter(|t| t.category == "Sets").count();
+    assert_eq!(sets, ids.len());
+}
