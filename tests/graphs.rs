@@ -1,5 +1,6 @@
-//! Every graph under `graphs/` meets its expected outputs, and evaluates to identical outputs
-//! and messages with one thread and with all threads.
+//! Every graph under `graphs/` checks without warnings, carries an expected value for every named
+//! output and meets it, and evaluates to identical outputs and messages with one thread and with
+//! all threads.
 
 use std::path::{Path, PathBuf};
 
@@ -61,14 +62,28 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
                 continue;
             }
         };
-        if let Err(ds) = document.check(&registry) {
-            let first = ds
-                .iter()
-                .find(|d| d.is_error())
-                .map(|d| d.message())
-                .unwrap_or_default();
-            failures.push(format!("{name}: does not check: {first}"));
-            continue;
+        match document.check(&registry) {
+            Err(ds) => {
+                let first = ds
+                    .iter()
+                    .find(|d| d.is_error())
+                    .map(|d| d.message())
+                    .unwrap_or_default();
+                failures.push(format!("{name}: does not check: {first}"));
+                continue;
+            }
+            Ok(checked) => failures.extend(
+                checked
+                    .warnings
+                    .iter()
+                    .map(|w| format!("{name}: checks with a warning: {}", w.message())),
+            ),
+        }
+        let expected = &document.graph().expected;
+        for output in document.graph().outputs.iter().map(|o| &o.name) {
+            if !expected.iter().any(|(name, _)| name == output) {
+                failures.push(format!("{name}: output {output} has no expected value"));
+            }
         }
         let (serial, serial_dump) = evaluate(&document, &registry, 1);
         let (_, parallel_dump) = evaluate(&document, &registry, 0);

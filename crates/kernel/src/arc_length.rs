@@ -16,8 +16,48 @@ use crate::{Error, NurbsCurve, Result, Vector3};
 /// The number of Gauss–Legendre nodes per panel.
 const NODES: usize = 10;
 
-/// The deepest bisection of one span in the adaptive quadrature.
-const MAX_DEPTH: u32 = 40;
+/// The deepest bisection of one span in the adaptive quadrature: a panel 2⁻²⁴ of its span
+/// wide. Deeper bisection only chases rounding noise, and a cap on the depth is a cap on the
+/// work (at most 2²⁴ panels a span, reached only when the tolerance cannot be met).
+const MAX_DEPTH: u32 = 24;
+
+/// How many times the rounding noise of a length the absolute length tolerance is at least:
+/// the speed `|C'(t)|` of a curve whose control points coincide is not exactly zero but a few
+/// ulps of the coordinates, so a tolerance relative to a (near) zero length could never be met.
+const NOISE_FLOOR_ULPS: f64 = 64.0;
+
+/// The most pieces a curve may be divided into (by count or by length): 10,000,000, so that a
+/// mistyped count or a tiny length fails with a reason instead of exhausting memory.
+pub const MAX_DIVISIONS: usize = 10_000_000;
+
+/// Checks a division count: at least 1, at most [`MAX_DIVISIONS`].
+pub(crate) fn check_division_count(count: usize) -> Result<()> {
+    if count == 0 {
+        return Err(Error::InvalidInput(
+            "division count must be at least 1".into(),
+        ));
+    }
+    if count > MAX_DIVISIONS {
+        return Err(Error::InvalidInput(format!(
+            "division count {count} is more than {MAX_DIVISIONS}"
+        )));
+    }
+    Ok(())
+}
+
+/// How many whole `length`s fit into `total`, at most [`MAX_DIVISIONS`].
+pub(crate) fn division_count(total: f64, length: f64) -> Result<usize> {
+    let count = (total / length).floor();
+    if count > MAX_DIVISIONS as f64 {
+        return Err(Error::InvalidInput(format!(
+            "division length {length} cuts the curve of length {total} into more than \
+             {MAX_DIVISIONS} pieces"
+        )));
+    }
+    // `count` is a whole number in 0..=MAX_DIVISIONS here (NaN compares false above and
+    // saturates to 0).
+    Ok(count as usize)
+}
 
 /// The 10-point Gauss–Legendre nodes on `[−1, 1]` and their weights, computed once by Newton's
 /// method on the Legendre polynomial `P₁₀`.
@@ -103,6 +143,22 @@ impl NurbsCurve {
         breaks.windows(2).map(|w| self.panel(w[0], w[1])).sum()
     }
 
+    /// The absolute tolerance of a length computed to the relative tolerance `relative`: that
+    /// share of the rough length, but never below the rounding noise of the control points'
+    /// coordinates ([`NOISE_FLOOR_ULPS`] ulps of the largest), so that degenerate curves (all
+    /// points equal, length zero) finish at once.
+    fn absolute_length_tolerance(&self, relative: f64) -> f64 {
+        let magnitude = self
+            .points()
+            .iter()
+            .map(|p| p.x.abs().max(p.y.abs()).max(p.z.abs()))
+            .fold(0.0, f64::max);
+        let noise = NOISE_FLOOR_ULPS * f64::EPSILON * magnitude;
+        (relative.max(1e-15) * self.rough_length())
+            .max(noise)
+            .max(f64::MIN_POSITIVE)
+    }
+
     /// The length of the curve to the default relative tolerance [`LENGTH_TOLERANCE`].
     pub fn length(&self) -> f64 {
         self.length_with_tolerance(LENGTH_TOLERANCE)
@@ -126,7 +182,7 @@ impl NurbsCurve {
             self.check_parameter(t)?;
         }
         let (a, b) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-        let tol = LENGTH_TOLERANCE * self.rough_length().max(f64::MIN_POSITIVE);
+        let tol = self.absolute_length_tolerance(LENGTH_TOLERANCE);
         let breaks = self.span_breaks();
         let mut total = 0.0;
         for w in breaks.windows(2) {
@@ -164,11 +220,7 @@ impl NurbsCurve {
     /// # Errors
     /// [`Error::InvalidInput`] when `count` is 0.
     pub fn divide_by_count(&self, count: usize) -> Result<Vec<f64>> {
-        if count == 0 {
-            return Err(Error::InvalidInput(
-                "division count must be at least 1".into(),
-            ));
-        }
+        check_division_count(count)?;
         let table = LengthTable::new(self, LENGTH_TOLERANCE);
         let total = table.total();
         let d = self.domain();
@@ -203,7 +255,7 @@ impl NurbsCurve {
         let table = LengthTable::new(self, LENGTH_TOLERANCE);
         let total = table.total();
         let slack = 1e-9 * total;
-        let count = ((total + slack) / length).floor() as usize;
+        let count = division_count(total + slack, length)?;
         let closed = self.is_closed();
         let mut out = Vec::with_capacity(count + 1);
         for k in 0..=count {
@@ -249,8 +301,7 @@ struct LengthTable {
 impl LengthTable {
     fn new(curve: &NurbsCurve, relative: f64) -> Self {
         let breaks = curve.span_breaks();
-        let rough = curve.rough_length();
-        let tolerance = relative.max(1e-15) * rough.max(f64::MIN_POSITIVE);
+        let tolerance = curve.absolute_length_tolerance(relative);
         let domain = curve.domain().length();
         let mut cumulative = Vec::with_capacity(breaks.len());
         cumulative.push(0.0);
@@ -335,6 +386,16 @@ mod tests {
     use super::*;
     use crate::{Circle, Line, Plane, Point3};
     use std::f64::consts::TAU;
+
+    #[test]
+    fn a_curve_whose_points_coincide_has_length_zero_at_once() {
+        let p = crate::Point3::new(1.0, 1.0, 1.0);
+        let c = NurbsCurve::create(&[p; 4], 3, false).expect("a degenerate cubic");
+        assert!(c.length() < 1e-12);
+        assert!(c.length_between(0.2, 0.7).expect("inside the domain") < 1e-12);
+        let ts = c.divide_by_count(4).expect("a division");
+        assert_eq!(ts.len(), 5);
+    }
 
     #[test]
     fn gauss_legendre_integrates_polynomials_exactly() {

@@ -82,11 +82,7 @@ impl Curve {
         if let Self::Nurbs(c) = self {
             return c.divide_by_count(count);
         }
-        if count == 0 {
-            return Err(Error::InvalidInput(
-                "division count must be at least 1".into(),
-            ));
-        }
+        crate::arc_length::check_division_count(count)?;
         let total = self.length();
         let d = self.domain();
         let last = if self.is_closed() { count - 1 } else { count };
@@ -116,7 +112,7 @@ impl Curve {
         }
         let total = self.length();
         let slack = 1e-9 * total;
-        let count = ((total + slack) / length).floor() as usize;
+        let count = crate::arc_length::division_count(total + slack, length)?;
         let mut out = Vec::with_capacity(count + 1);
         for k in 0..=count {
             let s = k as f64 * length;

@@ -65,6 +65,7 @@ mod transform;
 mod vector;
 
 pub use crate::arc::Arc;
+pub use crate::arc_length::MAX_DIVISIONS;
 pub use crate::bezier::Bezier;
 pub use crate::bounding_box::BoundingBox;
 pub use crate::brep::{

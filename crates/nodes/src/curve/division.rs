@@ -1,6 +1,6 @@
 //! Curve › Division: Divide Curve, Divide Length and Shatter.
 
-use locus_kernel::{Curve, KINK_ANGLE_TOLERANCE};
+use locus_kernel::{Curve, KINK_ANGLE_TOLERANCE, MAX_DIVISIONS};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve, Value};
 
 use super::{curve_input, finite_parameter, number_list};
@@ -82,10 +82,10 @@ pub fn divide_curve() -> NodeType {
         if count < 1 {
             return Err(format!("count {count} is below 1 segment").into());
         }
-        let count = usize::try_from(count).map_err(|_| NodeError::from("count is too large"))?;
-        if count > 10_000_000 {
-            return Err(format!("count {count} is too large").into());
-        }
+        let count = match usize::try_from(count) {
+            Ok(n) if n <= MAX_DIVISIONS => n,
+            _ => return Err(format!("count {count} is more than {MAX_DIVISIONS}").into()),
+        };
         let mut ts = curve.divide_by_count(count)?;
         if kinks {
             ts = with_kinks(&curve, ts)?;
@@ -290,6 +290,28 @@ mod tests {
             Some(Value::Point(Point3::new(0.0, 2.0, 0.0)))
         );
         assert_eq!(messages(&r, Level::Error).len(), 3);
+    }
+
+    #[test]
+    fn divisions_past_the_limit_are_errors_not_allocations() {
+        // A tiny length (and a huge count) would ask for more points than memory holds.
+        let r = NodeCall::new(&divide_length())
+            .input(curve_tree(rectangle()))
+            .input(DataTree::from_list(vec![1e-300, f64::MIN_POSITIVE]))
+            .run();
+        let errors = messages(&r, Level::Error);
+        assert_eq!(errors.len(), 2, "{errors:?}");
+        assert!(
+            errors[0].contains("more than 10000000 pieces"),
+            "{errors:?}"
+        );
+        let r = NodeCall::new(&divide_curve())
+            .input(curve_tree(rectangle()))
+            .input(DataTree::from_list(vec![i64::MAX, 10_000_001]))
+            .run();
+        let errors = messages(&r, Level::Error);
+        assert_eq!(errors.len(), 2, "{errors:?}");
+        assert!(errors[1].contains("more than 10000000"), "{errors:?}");
     }
 
     #[test]

@@ -5,6 +5,7 @@ use locus_kernel::{Bezier, Curve, NurbsCurve, Point3, Polyline, Vector3};
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port, Shared};
 
 use super::{degree_from, knot_style_from, number_list, point_list, set_curve_length_domain};
+use crate::maths::sequence::MAX_SEQUENCE_LENGTH;
 
 /// Id of [`polyline`].
 pub const POLYLINE: &str = "curve.polyline";
@@ -329,10 +330,12 @@ pub fn knot_vector() -> NodeType {
             if count < 2 {
                 return Err(format!("count {count} is below 2 control points").into());
             }
-            let count = usize::try_from(count).map_err(|_| "count is too large")?;
-            if count > 10_000_000 {
-                return Err(format!("count {count} is too large").into());
-            }
+            let count = match usize::try_from(count) {
+                Ok(n) if n <= MAX_SEQUENCE_LENGTH => n,
+                _ => {
+                    return Err(format!("count {count} is more than {MAX_SEQUENCE_LENGTH}").into());
+                }
+            };
             if degree > count - 1 {
                 s.remark(format!(
                     "degree {degree} lowered to {} to fit {count} control points",
