@@ -18,6 +18,9 @@ const NODES: usize = 10;
 
 /// The deepest bisection of one span in the adaptive quadrature.
 const MAX_DEPTH: u32 = 40;
+/// The absolute length tolerance is at least this many ulps of the largest control point
+/// coordinate per span (the rounding noise of evaluating the curve's speed).
+const NOISE_FACTOR: f64 = 64.0;
 
 /// The 10-point Gauss–Legendre nodes on `[−1, 1]` and their weights, computed once by Newton's
 /// method on the Legendre polynomial `P₁₀`.
@@ -250,7 +253,17 @@ impl LengthTable {
     fn new(curve: &NurbsCurve, relative: f64) -> Self {
         let breaks = curve.span_breaks();
         let rough = curve.rough_length();
-        let tolerance = relative.max(1e-15) * rough.max(f64::MIN_POSITIVE);
+        // Lengths below the rounding noise of the control points' coordinates are not
+        // meaningful; without this floor a curve that collapses to a point far from the origin
+        // (an isocurve along a sphere's pole) would refine to MAX_DEPTH everywhere.
+        let scale = curve
+            .points()
+            .iter()
+            .fold(0.0_f64, |m, p| m.max(p.x.abs()).max(p.y.abs()).max(p.z.abs()));
+        let noise = NOISE_FACTOR * f64::EPSILON * scale * (breaks.len().max(2) - 1) as f64;
+        let tolerance = (relative.max(1e-15) * rough)
+            .max(noise)
+            .max(f64::MIN_POSITIVE);
         let domain = curve.domain().length();
         let mut cumulative = Vec::with_capacity(breaks.len());
         cumulative.push(0.0);
@@ -356,6 +369,22 @@ mod tests {
             .unwrap();
         assert!((l.length() - 5.0).abs() < 1e-14);
         assert!((l.parameter_at_length(2.0).unwrap() - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_curve_collapsed_to_a_point_has_length_zero_quickly() {
+        // The isocurve along the north pole of a sphere: nine rational control points that
+        // coincide up to rounding, far from the origin.
+        let sphere = crate::Sphere::new(Point3::new(10.0, -20.0, 30.0), 3.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let pole = sphere
+            .isocurve(crate::SurfaceDirection::U, sphere.domain_v().t1)
+            .unwrap();
+        let start = std::time::Instant::now();
+        assert!(pole.length() < 1e-12);
+        assert!(start.elapsed().as_secs_f64() < 1.0, "{:?}", start.elapsed());
     }
 
     #[test]
