@@ -256,10 +256,9 @@ impl LengthTable {
         // Lengths below the rounding noise of the control points' coordinates are not
         // meaningful; without this floor a curve that collapses to a point far from the origin
         // (an isocurve along a sphere's pole) would refine to MAX_DEPTH everywhere.
-        let scale = curve
-            .points()
-            .iter()
-            .fold(0.0_f64, |m, p| m.max(p.x.abs()).max(p.y.abs()).max(p.z.abs()));
+        let scale = curve.points().iter().fold(0.0_f64, |m, p| {
+            m.max(p.x.abs()).max(p.y.abs()).max(p.z.abs())
+        });
         let noise = NOISE_FACTOR * f64::EPSILON * scale * (breaks.len().max(2) - 1) as f64;
         let tolerance = (relative.max(1e-15) * rough)
             .max(noise)

@@ -87,7 +87,9 @@ mod tests {
     use super::*;
 
     fn square() -> Shared<NurbsSurface> {
-        Shared::new(NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap())
+        Shared::new(
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
+        )
     }
 
     #[test]
@@ -104,7 +106,12 @@ mod tests {
     fn surface_from_value_takes_one_face_breps_only() {
         let sphere = Sphere::new(Point3::ORIGIN, 2.0).unwrap();
         let one_face = Value::Brep(Shared::new(Brep::from_sphere(&sphere).unwrap()));
-        let bx = OrientedBox::new(Plane::WORLD_XY, Interval::UNIT, Interval::UNIT, Interval::UNIT);
+        let bx = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::UNIT,
+        );
         let six_faces = Value::Brep(Shared::new(Brep::from_box(&bx).unwrap()));
         let s = surface_from_value(&one_face).unwrap();
         assert_eq!(*s, sphere.to_nurbs().unwrap());

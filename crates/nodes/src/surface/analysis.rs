@@ -177,12 +177,8 @@ pub fn surface_closest_point() -> NodeType {
              Evaluate Surface.",
         )
         .input(Port::new("Point", "P", DataType::Point).doc("Sample point to project."))
-        .input(surface_port(
-            "Surface to project onto.",
-        ))
-        .output(
-            Port::new("Point", "P", DataType::Point).doc("Closest point on the surface."),
-        )
+        .input(surface_port("Surface to project onto."))
+        .output(Port::new("Point", "P", DataType::Point).doc("Closest point on the surface."))
         .output(
             Port::new("UV Point", "uvP", DataType::Point)
                 .doc("Parameters of the closest point, as (u, v, 0)."),
@@ -357,7 +353,11 @@ mod tests {
             .input(uv(FRAC_PI_2, 0.0))
             .run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
-        assert!(point(&r, 0).unwrap().abs_diff_eq(Point3::new(0.0, 2.0, 0.0), EPS));
+        assert!(
+            point(&r, 0)
+                .unwrap()
+                .abs_diff_eq(Point3::new(0.0, 2.0, 0.0), EPS)
+        );
         assert!((vector(&r, 1).unwrap() - Vector3::Y).length() < EPS);
         // Su along −x, Sv along +z at the equator.
         let su = vector(&r, 2).unwrap();
@@ -376,9 +376,16 @@ mod tests {
             .input(uv(1.0, FRAC_PI_2))
             .run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
-        assert!(point(&r, 0).unwrap().abs_diff_eq(Point3::new(0.0, 0.0, 1.0), EPS));
+        assert!(
+            point(&r, 0)
+                .unwrap()
+                .abs_diff_eq(Point3::new(0.0, 0.0, 1.0), EPS)
+        );
         assert!((vector(&r, 1).unwrap() - Vector3::Z).length() < 1e-9);
-        assert!(vector(&r, 2).unwrap().length() < 1e-12, "Su vanishes at the pole");
+        assert!(
+            vector(&r, 2).unwrap().length() < 1e-12,
+            "Su vanishes at the pole"
+        );
     }
 
     #[test]
@@ -392,7 +399,10 @@ mod tests {
             .run();
         assert_eq!(point(&r, 0), Some(Point3::new(2.0, -1.0, 0.0)));
         let w = texts(&r, Level::Warning);
-        assert!(w.len() == 1 && w[0].contains("outside the domain 0 to 1"), "{w:?}");
+        assert!(
+            w.len() == 1 && w[0].contains("outside the domain 0 to 1"),
+            "{w:?}"
+        );
         let nan = NodeCall::new(&evaluate_surface())
             .input(DataTree::from_item(sphere(1.0)))
             .input(uv(f64::NAN, 0.0))
@@ -408,7 +418,11 @@ mod tests {
             .input(DataTree::from_item(sphere(2.0)))
             .run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
-        assert!(point(&r, 0).unwrap().abs_diff_eq(Point3::new(0.0, 1.2, 1.6), 1e-12));
+        assert!(
+            point(&r, 0)
+                .unwrap()
+                .abs_diff_eq(Point3::new(0.0, 1.2, 1.6), 1e-12)
+        );
         assert!((number(&r, 2).unwrap() - 3.0).abs() < 1e-12);
         let uvp = point(&r, 1).unwrap();
         assert!((uvp.x - FRAC_PI_2).abs() < 1e-9 && uvp.z == 0.0);
@@ -460,7 +474,11 @@ mod tests {
                 .run();
             assert_eq!(number(&r, 1), None);
             assert_eq!(number(&r, 2), None);
-            assert_eq!(r.outputs[1].item_count(), 1, "a null keeps the item aligned");
+            assert_eq!(
+                r.outputs[1].item_count(),
+                1,
+                "a null keeps the item aligned"
+            );
             let w = texts(&r, Level::Warning);
             assert!(w[0].contains("no curvature"), "{w:?}");
         }

@@ -90,7 +90,7 @@ fn grid_shape(total: usize, u_count: i64) -> Result<(usize, usize), NodeError> {
         return Err(format!("input U: the u count must be at least 2, got {u_count}").into());
     }
     let nu = usize::try_from(u_count).map_err(|_| format!("input U: {u_count} is too large"))?;
-    if total % nu != 0 {
+    if !total.is_multiple_of(nu) {
         return Err(format!(
             "input P: {total} points do not make a grid of {nu} along u (not a multiple)"
         )
@@ -153,7 +153,9 @@ fn averaged_parameters(lines: &[Vec<Point3>], direction: &str) -> Result<Vec<f64
         }
     }
     if used == 0 {
-        return Err(format!("input P: every line of points along {direction} has zero length").into());
+        return Err(
+            format!("input P: every line of points along {direction} has zero length").into(),
+        );
     }
     let mut params: Vec<f64> = sum.iter().map(|x| x / used as f64).collect();
     params[0] = 0.0;
@@ -206,12 +208,14 @@ impl Collocation {
             }
             a.swap(col, best);
             pivots.swap(col, best);
-            for r in col + 1..n {
-                let factor = a[r][col] / a[col][col];
+            let (upper, lower) = a.split_at_mut(col + 1);
+            let pivot_row = &upper[col];
+            for row in lower {
+                let factor = row[col] / pivot_row[col];
                 if factor != 0.0 {
-                    a[r][col] = factor;
-                    for c in col + 1..n {
-                        a[r][c] -= factor * a[col][c];
+                    row[col] = factor;
+                    for (x, &p) in row[col + 1..].iter_mut().zip(&pivot_row[col + 1..]) {
+                        *x -= factor * p;
                     }
                 }
             }
@@ -224,18 +228,20 @@ impl Collocation {
         let n = b.len();
         let mut x: Vec<Point3> = self.pivots.iter().map(|&p| b[p]).collect();
         for r in 0..n {
-            let mut acc = x[r].to_vector();
-            for c in 0..r {
-                acc -= x[c].to_vector() * self.lu[r][c];
-            }
+            let row = &self.lu[r];
+            let acc = x[..r]
+                .iter()
+                .zip(row)
+                .fold(x[r].to_vector(), |acc, (xc, &l)| acc - xc.to_vector() * l);
             x[r] = Point3::from_vector(acc);
         }
         for r in (0..n).rev() {
-            let mut acc = x[r].to_vector();
-            for c in r + 1..n {
-                acc -= x[c].to_vector() * self.lu[r][c];
-            }
-            x[r] = Point3::from_vector(acc / self.lu[r][r]);
+            let row = &self.lu[r];
+            let acc = x[r + 1..]
+                .iter()
+                .zip(&row[r + 1..])
+                .fold(x[r].to_vector(), |acc, (xc, &u)| acc - xc.to_vector() * u);
+            x[r] = Point3::from_vector(acc / row[r]);
         }
         x
     }
@@ -313,7 +319,10 @@ mod tests {
         assert!(r.messages.is_empty(), "{:?}", r.messages);
         let s = surface(&r);
         assert_eq!((s.degree_u(), s.degree_v()), (3, 3));
-        assert_eq!((s.domain_u(), s.domain_v()), (Interval::UNIT, Interval::UNIT));
+        assert_eq!(
+            (s.domain_u(), s.domain_v()),
+            (Interval::UNIT, Interval::UNIT)
+        );
         // The grid is uniform in x and y, so the parameters are near k/(n − 1); every point
         // is reached by the closest point at distance ~0.
         for p in &pts {
@@ -322,7 +331,10 @@ mod tests {
         }
         // A quadric saddle is reproduced closely between the points too.
         let mid = s.point_at(0.5, 0.5);
-        assert!((mid.z - (mid.x * mid.x - mid.y * mid.y) / 10.0).abs() < 2e-2, "{mid:?}");
+        assert!(
+            (mid.z - (mid.x * mid.x - mid.y * mid.y) / 10.0).abs() < 2e-2,
+            "{mid:?}"
+        );
     }
 
     #[test]
@@ -347,7 +359,10 @@ mod tests {
         ];
         let s = surface(&run(pts, 2, true));
         assert_eq!((s.degree_u(), s.degree_v()), (1, 1));
-        assert!(s.point_at(0.5, 0.5).abs_diff_eq(Point3::new(0.5, 0.5, 0.25), 1e-12));
+        assert!(
+            s.point_at(0.5, 0.5)
+                .abs_diff_eq(Point3::new(0.5, 0.5, 0.25), 1e-12)
+        );
         let n = s.normal_at(0.0, 0.0).unwrap();
         assert!((n - Vector3::Z).length() < 1e-12, "u along x, v along y");
     }
@@ -363,6 +378,12 @@ mod tests {
         let same = vec![Point3::ORIGIN; 4];
         assert!(error(&run(same.clone(), 2, true)).contains("zero length"));
         // As control points, coincident points are allowed (a degenerate surface).
-        assert!(run(same, 2, false).outputs[0].values().next().flatten().is_some());
+        assert!(
+            run(same, 2, false).outputs[0]
+                .values()
+                .next()
+                .flatten()
+                .is_some()
+        );
     }
 }

@@ -235,7 +235,11 @@ pub fn plane_surface() -> NodeType {
 /// A finite domain of non-zero length, made increasing.
 fn extent(d: Interval, input: &str) -> Result<Interval, NodeError> {
     if !d.is_finite() {
-        return Err(format!("input {input}: the domain {} to {} is not finite", d.t0, d.t1).into());
+        return Err(format!(
+            "input {input}: the domain {} to {} is not finite",
+            d.t0, d.t1
+        )
+        .into());
     }
     if d.t0 == d.t1 {
         return Err(format!("input {input}: the domain {} to {} is empty", d.t0, d.t1).into());
@@ -288,8 +292,14 @@ mod tests {
         for (u, v) in [(0.3, 0.2), (2.0, -1.0), (5.5, 1.4)] {
             assert!((s.point_at(u, v).distance(Point3::ORIGIN) - 1.0).abs() < EPS);
         }
-        assert!(s.point_at(0.0, 0.0).abs_diff_eq(Point3::new(1.0, 0.0, 0.0), EPS));
-        assert!(s.point_at(PI / 2.0, 0.0).abs_diff_eq(Point3::new(0.0, 1.0, 0.0), EPS));
+        assert!(
+            s.point_at(0.0, 0.0)
+                .abs_diff_eq(Point3::new(1.0, 0.0, 0.0), EPS)
+        );
+        assert!(
+            s.point_at(PI / 2.0, 0.0)
+                .abs_diff_eq(Point3::new(0.0, 1.0, 0.0), EPS)
+        );
     }
 
     #[test]
@@ -335,7 +345,10 @@ mod tests {
         assert!(r.messages.is_empty(), "{:?}", r.messages);
         let s = surface(&r, 0);
         assert_eq!(s.domain_v(), Interval::new(-3.0, 0.0));
-        assert!(s.point_at(0.0, -3.0).abs_diff_eq(Point3::new(2.0, 0.0, -3.0), EPS));
+        assert!(
+            s.point_at(0.0, -3.0)
+                .abs_diff_eq(Point3::new(2.0, 0.0, -3.0), EPS)
+        );
         let n = s.normal_at(0.0, -1.0).unwrap();
         assert!((n - Vector3::X).length() < EPS, "{n:?}");
         let bad = NodeCall::new(&cylinder())
@@ -360,8 +373,14 @@ mod tests {
         assert_eq!(s.domain_v(), Interval::new(-4.0, 0.0));
         assert_eq!(s.singular_point(SurfaceSide::North), Some(tip));
         // The base circle lies in World XY, starting on the x axis.
-        assert!(s.point_at(0.0, -4.0).abs_diff_eq(Point3::new(2.0, 0.0, 0.0), EPS));
-        assert!(s.point_at(PI, -4.0).abs_diff_eq(Point3::new(-2.0, 0.0, 0.0), EPS));
+        assert!(
+            s.point_at(0.0, -4.0)
+                .abs_diff_eq(Point3::new(2.0, 0.0, 0.0), EPS)
+        );
+        assert!(
+            s.point_at(PI, -4.0)
+                .abs_diff_eq(Point3::new(-2.0, 0.0, 0.0), EPS)
+        );
         // Outward normals: away from the axis and up (the slope is 2 in 4).
         let n = s.normal_at(0.0, -2.0).unwrap();
         let want = Vector3::new(4.0, 0.0, 2.0) / 20f64.sqrt();
@@ -377,7 +396,10 @@ mod tests {
             down.outputs[1],
             DataTree::from_item(Point3::new(0.0, 0.0, -1.0))
         );
-        assert!(s.point_at(0.0, 1.0).abs_diff_eq(Point3::new(1.0, 0.0, 0.0), EPS));
+        assert!(
+            s.point_at(0.0, 1.0)
+                .abs_diff_eq(Point3::new(1.0, 0.0, 0.0), EPS)
+        );
         let bad = NodeCall::new(&cone())
             .skip_input()
             .input(DataTree::from_item(f64::INFINITY))
@@ -399,7 +421,10 @@ mod tests {
         assert!(r.messages.is_empty(), "{:?}", r.messages);
         let s = surface(&r, 0);
         assert_eq!(s.domain_u(), Interval::new(-1.0, 3.0));
-        assert!(s.point_at(2.0, 1.0).abs_diff_eq(plane.point_at(2.0, 1.0, 0.0), EPS));
+        assert!(
+            s.point_at(2.0, 1.0)
+                .abs_diff_eq(plane.point_at(2.0, 1.0, 0.0), EPS)
+        );
         let bad = NodeCall::new(&plane_surface())
             .skip_input()
             .input(DataTree::from_item(Interval::new(1.0, 1.0)))

@@ -1,16 +1,21 @@
-//! Surface › Util: Divide Surface; and Iso Curve, which Grasshopper files under Curve › Spline
-//! (id `curve.iso_curve`) but which lives here beside the other surface code.
+//! Surface › Util: Divide Surface and Iso Curve.
+//!
+//! Grasshopper files Iso Curve under Curve › Spline; here it sits with the other nodes that
+//! take a surface and a {uv} (**decision**, so that the Curve category stays as it is).
 
 use locus_kernel::tolerance::ZERO_TOLERANCE;
 use locus_kernel::{Curve, Point3, SurfaceDirection, Vector3};
-use locus_runtime::{Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
+use locus_runtime::{
+    Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Value,
+    format_value,
+};
 
 use super::analysis::{surface_input, surface_port, uv_on, uv_port};
 
 /// Id of [`divide_surface`].
 pub const DIVIDE_SURFACE: &str = "surface.divide_surface";
 /// Id of [`iso_curve`].
-pub const ISO_CURVE: &str = "curve.iso_curve";
+pub const ISO_CURVE: &str = "surface.iso_curve";
 
 /// The largest number of points Divide Surface makes for one surface: (U + 1)·(V + 1).
 pub const MAX_GRID_POINTS: u64 = 10_000_000;
@@ -42,9 +47,7 @@ pub fn divide_surface() -> NodeType {
              v. At singular points (poles, tips) the normal is the limit from inside the \
              rectangle, as in Rhino; a point with no normal at all gets a null normal.",
         )
-        .input(surface_port(
-            "Surface to divide.",
-        ))
+        .input(surface_port("Surface to divide."))
         .input(
             Port::new("U Count", "U", DataType::Integer)
                 .default_value(10_i64)
@@ -130,8 +133,8 @@ pub fn divide_surface() -> NodeType {
 
 /// Iso Curve \[Iso\]: the isocurves of a surface through a `uv`.
 pub fn iso_curve() -> NodeType {
-    NodeType::new(ISO_CURVE, "Iso Curve", "Iso", "Curve")
-        .subcategory("Spline")
+    NodeType::new(ISO_CURVE, "Iso Curve", "Iso", "Surface")
+        .subcategory("Util")
         .description(
             "Extracts the two isocurves of a surface through a {uv} coordinate, as exact NURBS \
              curves (Rhino's IsoCurve): the U isocurve runs in the u direction at constant v, \
@@ -140,9 +143,7 @@ pub fn iso_curve() -> NodeType {
              still given, with a remark. Parameters outside the domain give isocurves of the \
              surface's extension, with a warning.",
         )
-        .input(surface_port(
-            "Surface to extract isocurves from.",
-        ))
+        .input(surface_port("Surface to extract isocurves from."))
         .input(uv_port("UV Point"))
         .output(
             Port::new("U Isocurve", "U", DataType::Curve)
@@ -161,7 +162,10 @@ pub fn iso_curve() -> NodeType {
                 let first = c.points()[0];
                 let tolerance = ZERO_TOLERANCE * (1.0 + first.to_vector().length());
                 if c.points().iter().all(|p| p.distance(first) <= tolerance) {
-                    s.remark(format!("the {name} isocurve collapses to the point {first:?}"));
+                    s.remark(format!(
+                        "the {name} isocurve collapses to the point {}",
+                        format_value(&Value::Point(first))
+                    ));
                 }
             }
             s.set(0, Shared::new(Curve::from(along_u)));
@@ -210,7 +214,10 @@ mod tests {
             vec![Point3::new(4.0, 0.0, 0.0), Point3::new(4.0, 1.0, 0.0)]
         );
         let normals = r.outputs[1].branch(&"{0;0;0}".parse().unwrap()).unwrap();
-        assert_eq!(normals.slice::<Vector3>().unwrap(), &[Vector3::Z, Vector3::Z]);
+        assert_eq!(
+            normals.slice::<Vector3>().unwrap(),
+            &[Vector3::Z, Vector3::Z]
+        );
     }
 
     #[test]
@@ -234,7 +241,11 @@ mod tests {
 
     #[test]
     fn bad_counts_are_errors() {
-        for (u, v, word) in [(0, 3, "input U"), (3, -1, "input V"), (10_000, 10_000, "limit")] {
+        for (u, v, word) in [
+            (0, 3, "input U"),
+            (3, -1, "input V"),
+            (10_000, 10_000, "limit"),
+        ] {
             let r = NodeCall::new(&divide_surface())
                 .input(DataTree::from_item(sphere(1.0)))
                 .input(DataTree::from_item(u as i64))
@@ -267,15 +278,25 @@ mod tests {
         // The U isocurve at v = 0 is the equator, the V isocurve at u = π/2 a meridian.
         assert_eq!(u.domain(), Interval::new(0.0, TAU));
         assert!((u.length() - 2.0 * TAU).abs() < 1e-9);
-        assert!(u.point_at(0.0).abs_diff_eq(Point3::new(2.0, 0.0, 0.0), 1e-12));
+        assert!(
+            u.point_at(0.0)
+                .abs_diff_eq(Point3::new(2.0, 0.0, 0.0), 1e-12)
+        );
         assert!((v.length() - TAU).abs() < 1e-9);
-        assert!(v.point_at(0.0).abs_diff_eq(Point3::new(0.0, 2.0, 0.0), 1e-12));
+        assert!(
+            v.point_at(0.0)
+                .abs_diff_eq(Point3::new(0.0, 2.0, 0.0), 1e-12)
+        );
         // At the pole the U isocurve collapses.
         let pole = NodeCall::new(&iso_curve())
             .input(DataTree::from_item(sphere(2.0)))
             .input(DataTree::from_item(Point3::new(1.0, FRAC_PI_2, 0.0)))
             .run();
-        assert!(pole.messages.iter().any(|m| m.level == Level::Remark && m.text.contains("U isocurve")));
+        assert!(
+            pole.messages
+                .iter()
+                .any(|m| m.level == Level::Remark && m.text.contains("U isocurve"))
+        );
         let nan = NodeCall::new(&iso_curve())
             .input(DataTree::from_item(sphere(2.0)))
             .input(DataTree::from_item(Point3::new(1.0, f64::INFINITY, 0.0)))
