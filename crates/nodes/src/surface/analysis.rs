@@ -389,6 +389,25 @@ mod tests {
     }
 
     #[test]
+    fn evaluate_surface_at_a_cone_tip() {
+        let cone = Shared::new(
+            locus_kernel::Cone::new(Plane::WORLD_XY, 2.0, 1.0)
+                .unwrap()
+                .to_nurbs()
+                .unwrap(),
+        );
+        let r = NodeCall::new(&evaluate_surface())
+            .input(DataTree::from_item(cone))
+            .input(uv(1.0, 0.0))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        assert!(point(&r, 0).unwrap().abs_diff_eq(Point3::ORIGIN, EPS));
+        // The limit normal at the apex is along the generator's normal at that u.
+        let n = vector(&r, 1).unwrap();
+        assert!((n.length() - 1.0).abs() < 1e-12 && n.z < 0.0, "{n:?}");
+    }
+
+    #[test]
     fn evaluate_surface_outside_the_domain_extends_with_a_warning() {
         let plane = Shared::new(
             NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),

@@ -336,6 +336,25 @@ mod tests {
     }
 
     #[test]
+    fn degenerate_planes_are_errors() {
+        let flat = Plane {
+            origin: Point3::ORIGIN,
+            x_axis: Vector3::X,
+            y_axis: Vector3::X,
+            z_axis: Vector3::ZERO,
+        };
+        for node in [sphere(), cylinder(), cone()] {
+            let r = NodeCall::new(&node).input(DataTree::from_item(flat)).run();
+            assert!(r.outputs[0].values().all(|v| v.is_none()));
+            assert!(errors(&r)[0].contains("input B"), "{:?}", r.messages);
+        }
+        let r = NodeCall::new(&plane_surface())
+            .input(DataTree::from_item(flat))
+            .run();
+        assert!(errors(&r)[0].contains("input P"), "{:?}", r.messages);
+    }
+
+    #[test]
     fn cylinder_runs_along_the_plane_normal() {
         let r = NodeCall::new(&cylinder())
             .skip_input()
