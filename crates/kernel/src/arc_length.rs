@@ -388,6 +388,20 @@ mod tests {
     use std::f64::consts::TAU;
 
     #[test]
+    fn a_curve_collapsed_to_a_point_far_from_the_origin_has_length_zero() {
+        // The isocurve along the north pole of a sphere: nine rational control points that
+        // coincide up to rounding, far from the origin (this once refined without end).
+        let sphere = crate::Sphere::new(crate::Point3::new(10.0, -20.0, 30.0), 3.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let pole = sphere
+            .isocurve(crate::SurfaceDirection::U, sphere.domain_v().t1)
+            .unwrap();
+        assert!(pole.length() < 1e-12);
+    }
+
+    #[test]
     fn a_curve_whose_points_coincide_has_length_zero_at_once() {
         let p = crate::Point3::new(1.0, 1.0, 1.0);
         let c = NurbsCurve::create(&[p; 4], 3, false).expect("a degenerate cubic");

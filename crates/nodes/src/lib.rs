@@ -11,6 +11,7 @@
 //!   Text \[Txt\], Domain.
 //! - Geometry ([`params::geometry`]): Point \[Pt\], Vector \[Vec\], Plane \[Pln\].
 //! - Curve ([`params::curve`]): Curve \[Crv\].
+//! - Surface ([`params::surface`]): Surface \[Srf\].
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -64,6 +65,15 @@
 //!   Shatter.
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
+//!
+//! **Surface** ([`surface`])
+//! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Cylinder \[Cyl\], Cone, Plane Surface
+//!   \[PlaneSrf\].
+//! - Freeform ([`surface::freeform`]): Surface From Points \[SrfGrid\].
+//! - Analysis ([`surface::analysis`]): Evaluate Surface \[EvalSrf\], Surface Closest Point
+//!   \[Srf CP\], Principal Curvature \[Curvature\], Surface Curvature \[Curvature\].
+//! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].
+//! - The Surface parameter \[Srf\] is in [`params::surface`].
 
 pub mod curve;
 pub mod expression;

@@ -1,6 +1,306 @@
-//! Surface › util (to be filled in).
+//! Surface › Util: Divide Surface and Iso Curve.
+//!
+//! Grasshopper files Iso Curve under Curve › Spline; here it sits with the other nodes that
+//! take a surface and a {uv} (**decision**, so that the Curve category stays as it is).
 
-use locus_runtime::NodeRegistry;
+use locus_kernel::tolerance::ZERO_TOLERANCE;
+use locus_kernel::{Curve, Point3, SurfaceDirection, Vector3};
+use locus_runtime::{
+    Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Value,
+    format_value,
+};
 
-/// Registers the node types of this file.
-pub fn register(_registry: &mut NodeRegistry) {}
+use super::analysis::{surface_input, surface_port, uv_on, uv_port};
+
+/// Id of [`divide_surface`].
+pub const DIVIDE_SURFACE: &str = "surface.divide_surface";
+/// Id of [`iso_curve`].
+pub const ISO_CURVE: &str = "surface.iso_curve";
+
+/// The largest number of points Divide Surface makes for one surface: (U + 1)·(V + 1).
+pub const MAX_GRID_POINTS: u64 = 10_000_000;
+
+/// Registers the util nodes.
+pub fn register(registry: &mut NodeRegistry) {
+    registry.register(divide_surface());
+    registry.register(iso_curve());
+}
+
+/// A division count: a positive integer.
+fn count(n: i64, input: &str) -> Result<usize, NodeError> {
+    if n < 1 {
+        return Err(format!("input {input}: the count must be at least 1, got {n}").into());
+    }
+    usize::try_from(n).map_err(|_| format!("input {input}: the count {n} is too large").into())
+}
+
+/// Divide Surface \[SDivide\]: a grid of points, normals and parameters on a surface.
+pub fn divide_surface() -> NodeType {
+    NodeType::new(DIVIDE_SURFACE, "Divide Surface", "SDivide", "Surface")
+        .subcategory("Util")
+        .description(
+            "Divides a surface into a grid of U × V equal steps of its parameter rectangle \
+             (equal in parameters, not in distance): (U + 1) × (V + 1) points, edges included, \
+             with their unit normals and their parameters as points (u, v, 0). Each row of \
+             constant u is one branch, its path the surface's path with the surface's index \
+             and the row number appended ({0;0;0} to {0;0;U} for one surface), and runs along \
+             v. At singular points (poles, tips) the normal is the limit from inside the \
+             rectangle, as in Rhino; a point with no normal at all gets a null normal.",
+        )
+        .input(surface_port("Surface to divide."))
+        .input(
+            Port::new("U Count", "U", DataType::Integer)
+                .default_value(10_i64)
+                .doc("Number of steps along u, at least 1. Default 10."),
+        )
+        .input(
+            Port::new("V Count", "V", DataType::Integer)
+                .default_value(10_i64)
+                .doc("Number of steps along v, at least 1. Default 10."),
+        )
+        .output(
+            Port::new("Points", "P", DataType::Point)
+                .tree()
+                .doc("Grid points, one branch per row of constant u."),
+        )
+        .output(
+            Port::new("Normals", "N", DataType::Vector)
+                .tree()
+                .doc("Unit normals at the grid points, in the same tree."),
+        )
+        .output(
+            Port::new("Parameters", "uv", DataType::Point)
+                .tree()
+                .doc("Parameters of the grid points as (u, v, 0), in the same tree."),
+        )
+        .solve(|s| {
+            let surface = surface_input(s, 0)?;
+            let nu = count(*s.item::<i64>(1)?, "U")?;
+            let nv = count(*s.item::<i64>(2)?, "V")?;
+            let total = (nu as u64 + 1).saturating_mul(nv as u64 + 1);
+            if total > MAX_GRID_POINTS {
+                return Err(format!(
+                    "a {nu} × {nv} division makes {total} points, more than the limit of \
+                     {MAX_GRID_POINTS}"
+                )
+                .into());
+            }
+            let (du, dv) = (surface.domain_u(), surface.domain_v());
+            // The ends are the domain's ends exactly, so that edges and poles are hit.
+            let steps = |d: locus_kernel::Interval, n: usize| -> Vec<f64> {
+                (0..=n)
+                    .map(|i| match i {
+                        0 => d.t0,
+                        i if i == n => d.t1,
+                        i => d.parameter_at(i as f64 / n as f64),
+                    })
+                    .collect()
+            };
+            let (us, vs) = (steps(du, nu), steps(dv, nv));
+            let mut grid = vec![Point3::ORIGIN; us.len() * vs.len()];
+            surface.points_on_grid(&us, &vs, &mut grid)?;
+            let base = s.path().with_appended(s.index().unwrap_or(0) as u32);
+            let (mut points, mut normals, mut params) =
+                (DataTree::new(), DataTree::new(), DataTree::new());
+            let mut missing = 0usize;
+            for (i, &u) in us.iter().enumerate() {
+                let path = base.with_appended(i as u32);
+                let row = &grid[i * vs.len()..(i + 1) * vs.len()];
+                let mut n = Branch::new(DataType::Vector);
+                for &v in &vs {
+                    match surface.normal_at(u, v) {
+                        Ok(normal) => n.push::<Vector3>(normal),
+                        Err(_) => {
+                            missing += 1;
+                            n.push_null();
+                        }
+                    }
+                }
+                let uv: Vec<Point3> = vs.iter().map(|&v| Point3::new(u, v, 0.0)).collect();
+                points.insert(path.clone(), Branch::from_items(row.to_vec()));
+                normals.insert(path.clone(), n);
+                params.insert(path, Branch::from_items(uv));
+            }
+            if missing > 0 {
+                s.warning(format!("{missing} grid point(s) have no normal"));
+            }
+            s.set_tree(0, points);
+            s.set_tree(1, normals);
+            s.set_tree(2, params);
+            Ok(())
+        })
+}
+
+/// Iso Curve \[Iso\]: the isocurves of a surface through a `uv`.
+pub fn iso_curve() -> NodeType {
+    NodeType::new(ISO_CURVE, "Iso Curve", "Iso", "Surface")
+        .subcategory("Util")
+        .description(
+            "Extracts the two isocurves of a surface through a {uv} coordinate, as exact NURBS \
+             curves (Rhino's IsoCurve): the U isocurve runs in the u direction at constant v, \
+             over the surface's u domain; the V isocurve runs in the v direction at constant u. \
+             An isocurve along a singular side (a sphere's pole) collapses to a point and is \
+             still given, with a remark. Parameters outside the domain give isocurves of the \
+             surface's extension, with a warning.",
+        )
+        .input(surface_port("Surface to extract isocurves from."))
+        .input(uv_port("UV Point"))
+        .output(
+            Port::new("U Isocurve", "U", DataType::Curve)
+                .doc("Isocurve in the u direction, at v = the uv point's v."),
+        )
+        .output(
+            Port::new("V Isocurve", "V", DataType::Curve)
+                .doc("Isocurve in the v direction, at u = the uv point's u."),
+        )
+        .solve(|s| {
+            let surface = surface_input(s, 0)?;
+            let (u, v) = uv_on(s, 1, &surface)?;
+            let along_u = surface.isocurve(SurfaceDirection::U, v)?;
+            let along_v = surface.isocurve(SurfaceDirection::V, u)?;
+            for (name, c) in [("U", &along_u), ("V", &along_v)] {
+                let first = c.points()[0];
+                let tolerance = ZERO_TOLERANCE * (1.0 + first.to_vector().length());
+                if c.points().iter().all(|p| p.distance(first) <= tolerance) {
+                    s.remark(format!(
+                        "the {name} isocurve collapses to the point {}",
+                        format_value(&Value::Point(first))
+                    ));
+                }
+            }
+            s.set(0, Shared::new(Curve::from(along_u)));
+            s.set(1, Shared::new(Curve::from(along_v)));
+            Ok(())
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::f64::consts::{FRAC_PI_2, TAU};
+
+    use locus_kernel::{Interval, NurbsSurface, Plane, Sphere};
+    use locus_runtime::{Level, NodeCall, TreePath, Value};
+
+    use super::*;
+
+    fn sphere(r: f64) -> Shared<NurbsSurface> {
+        Shared::new(Sphere::new(Point3::ORIGIN, r).unwrap().to_nurbs().unwrap())
+    }
+
+    fn points(tree: &DataTree, path: &str) -> Vec<Point3> {
+        let b = tree.branch(&path.parse::<TreePath>().unwrap()).expect(path);
+        b.slice::<Point3>().unwrap().to_vec()
+    }
+
+    #[test]
+    fn divides_a_plane_into_a_tree_of_rows() {
+        let plane = Shared::new(
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::new(0.0, 4.0), Interval::UNIT)
+                .unwrap(),
+        );
+        let r = NodeCall::new(&divide_surface())
+            .input(DataTree::from_item(plane))
+            .input(DataTree::from_item(2_i64))
+            .input(DataTree::from_item(1_i64))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        assert_eq!(r.outputs[0].branch_count(), 3);
+        assert_eq!(
+            points(&r.outputs[0], "{0;0;1}"),
+            vec![Point3::new(2.0, 0.0, 0.0), Point3::new(2.0, 1.0, 0.0)]
+        );
+        assert_eq!(
+            points(&r.outputs[2], "{0;0;2}"),
+            vec![Point3::new(4.0, 0.0, 0.0), Point3::new(4.0, 1.0, 0.0)]
+        );
+        let normals = r.outputs[1].branch(&"{0;0;0}".parse().unwrap()).unwrap();
+        assert_eq!(
+            normals.slice::<Vector3>().unwrap(),
+            &[Vector3::Z, Vector3::Z]
+        );
+    }
+
+    #[test]
+    fn sphere_grid_reaches_the_poles_with_limit_normals() {
+        let r = NodeCall::new(&divide_surface())
+            .input(DataTree::from_list(vec![sphere(1.0), sphere(2.0)]))
+            .input(DataTree::from_item(4_i64))
+            .input(DataTree::from_item(2_i64))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        assert_eq!(r.outputs[0].branch_count(), 10);
+        let row = points(&r.outputs[0], "{0;1;3}");
+        assert!(row[0].abs_diff_eq(Point3::new(0.0, 0.0, -2.0), 1e-12));
+        assert!(row[2].abs_diff_eq(Point3::new(0.0, 0.0, 2.0), 1e-12));
+        let n = r.outputs[1].branch(&"{0;1;3}".parse().unwrap()).unwrap();
+        let n = n.slice::<Vector3>().unwrap();
+        assert!((n[0] + Vector3::Z).length() < 1e-9 && (n[2] - Vector3::Z).length() < 1e-9);
+        let uv = points(&r.outputs[2], "{0;0;4}");
+        assert_eq!(uv[0], Point3::new(TAU, -FRAC_PI_2, 0.0));
+    }
+
+    #[test]
+    fn bad_counts_are_errors() {
+        for (u, v, word) in [
+            (0, 3, "input U"),
+            (3, -1, "input V"),
+            (10_000, 10_000, "limit"),
+        ] {
+            let r = NodeCall::new(&divide_surface())
+                .input(DataTree::from_item(sphere(1.0)))
+                .input(DataTree::from_item(u as i64))
+                .input(DataTree::from_item(v as i64))
+                .run();
+            assert!(r.outputs[0].is_empty());
+            let e: Vec<&str> = r
+                .messages
+                .iter()
+                .filter(|m| m.level == Level::Error)
+                .map(|m| m.text.as_str())
+                .collect();
+            assert!(e.len() == 1 && e[0].contains(word), "{e:?}");
+        }
+    }
+
+    #[test]
+    fn isocurves_of_a_sphere() {
+        let r = NodeCall::new(&iso_curve())
+            .input(DataTree::from_item(sphere(2.0)))
+            .input(DataTree::from_item(Point3::new(FRAC_PI_2, 0.0, 0.0)))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let Some(Value::Curve(u)) = r.outputs[0].values().next().flatten() else {
+            panic!("no U curve")
+        };
+        let Some(Value::Curve(v)) = r.outputs[1].values().next().flatten() else {
+            panic!("no V curve")
+        };
+        // The U isocurve at v = 0 is the equator, the V isocurve at u = π/2 a meridian.
+        assert_eq!(u.domain(), Interval::new(0.0, TAU));
+        assert!((u.length() - 2.0 * TAU).abs() < 1e-9);
+        assert!(
+            u.point_at(0.0)
+                .abs_diff_eq(Point3::new(2.0, 0.0, 0.0), 1e-12)
+        );
+        assert!((v.length() - TAU).abs() < 1e-9);
+        assert!(
+            v.point_at(0.0)
+                .abs_diff_eq(Point3::new(0.0, 2.0, 0.0), 1e-12)
+        );
+        // At the pole the U isocurve collapses.
+        let pole = NodeCall::new(&iso_curve())
+            .input(DataTree::from_item(sphere(2.0)))
+            .input(DataTree::from_item(Point3::new(1.0, FRAC_PI_2, 0.0)))
+            .run();
+        assert!(
+            pole.messages
+                .iter()
+                .any(|m| m.level == Level::Remark && m.text.contains("U isocurve"))
+        );
+        let nan = NodeCall::new(&iso_curve())
+            .input(DataTree::from_item(sphere(2.0)))
+            .input(DataTree::from_item(Point3::new(1.0, f64::INFINITY, 0.0)))
+            .run();
+        assert!(nan.outputs[0].values().all(|v| v.is_none()));
+    }
+}
