@@ -5,6 +5,7 @@
 pub mod analysis;
 pub mod box_nodes;
 pub mod brep;
+pub mod brep_analysis;
 pub mod freeform;
 pub mod primitive;
 pub mod util;
@@ -19,4 +20,5 @@ pub fn register(registry: &mut NodeRegistry) {
     util::register(registry);
     box_nodes::register(registry);
     brep::register(registry);
+    brep_analysis::register(registry);
 }
