@@ -221,7 +221,10 @@ impl Brep {
                         Some(n) => n,
                         None => {
                             let old = &self.edges[e];
-                            let ends = [vertex(&mut out, old.vertices[0]), vertex(&mut out, old.vertices[1])];
+                            let ends = [
+                                vertex(&mut out, old.vertices[0]),
+                                vertex(&mut out, old.vertices[1]),
+                            ];
                             out.edges.push(BrepEdge {
                                 curve: old.curve.clone(),
                                 vertices: ends,
@@ -231,7 +234,10 @@ impl Brep {
                             out.edges.len() - 1
                         }
                     });
-                    let vertices = [vertex(&mut out, trim.vertices[0]), vertex(&mut out, trim.vertices[1])];
+                    let vertices = [
+                        vertex(&mut out, trim.vertices[0]),
+                        vertex(&mut out, trim.vertices[1]),
+                    ];
                     out.loops[loop_index].trims.push(out.trims.len());
                     out.trims.push(BrepTrim {
                         curve: trim.curve.clone(),
@@ -358,7 +364,12 @@ fn renumber(keep: &[bool]) -> Vec<Option<usize>> {
 /// way, `Some(true)` when opposite, `None` when they do not coincide.
 fn edges_coincide(a: &NurbsCurve, b: &NurbsCurve, tolerance: f64) -> Option<bool> {
     let near = |p: Point3, q: Point3| p.distance(q) <= tolerance;
-    let (a0, a1, b0, b1) = (a.start_point(), a.end_point(), b.start_point(), b.end_point());
+    let (a0, a1, b0, b1) = (
+        a.start_point(),
+        a.end_point(),
+        b.start_point(),
+        b.end_point(),
+    );
     let same = near(a0, b0) && near(a1, b1);
     let opposite = near(a0, b1) && near(a1, b0);
     let reversed = match (same, opposite) {
@@ -420,7 +431,9 @@ mod tests {
     use crate::{Cylinder, EdgeKind, Interval, OrientedBox, Plane, Sphere, Transform, Vector3};
 
     fn faces_of(b: &Brep) -> Vec<Brep> {
-        (0..b.faces().len()).map(|i| b.extract_face(i).unwrap()).collect()
+        (0..b.faces().len())
+            .map(|i| b.extract_face(i).unwrap())
+            .collect()
     }
 
     fn sample_box(plane: Plane, size: [f64; 3]) -> Brep {
@@ -439,7 +452,10 @@ mod tests {
         let joined = Brep::join(&faces_of(&b), 1e-9).unwrap();
         assert_eq!(joined.len(), 1);
         let j = &joined[0];
-        assert_eq!((j.faces().len(), j.edges().len(), j.vertices().len()), (6, 12, 8));
+        assert_eq!(
+            (j.faces().len(), j.edges().len(), j.vertices().len()),
+            (6, 12, 8)
+        );
         assert!(j.is_solid());
         assert!((j.volume().unwrap() - 24.0).abs() < 1e-12);
         assert_eq!(j.edges_of_kind(EdgeKind::Interior).len(), 12);
@@ -455,7 +471,12 @@ mod tests {
         }
         let j = Brep::join(&faces, 1e-9).unwrap().remove(0);
         assert!((j.volume().unwrap() - 1.0).abs() < 1e-12);
-        assert!(j.faces().iter().zip(b.faces()).all(|(a, b)| a.reversed == b.reversed));
+        assert!(
+            j.faces()
+                .iter()
+                .zip(b.faces())
+                .all(|(a, b)| a.reversed == b.reversed)
+        );
     }
 
     #[test]
@@ -486,8 +507,8 @@ mod tests {
 
     #[test]
     fn cylinder_parts_join_and_a_sphere_stays_whole() {
-        let cyl = Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.0, 2.0).unwrap(), true)
-            .unwrap();
+        let cyl =
+            Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.0, 2.0).unwrap(), true).unwrap();
         let j = Brep::join(&faces_of(&cyl), 1e-9).unwrap();
         assert_eq!(j.len(), 1);
         assert_eq!((j[0].edges().len(), j[0].vertices().len()), (3, 2));
@@ -518,10 +539,16 @@ mod tests {
         assert!(Brep::join(std::slice::from_ref(&b), f64::NAN).is_err());
         assert!(Brep::join(std::slice::from_ref(&b), -1.0).is_err());
         assert_eq!(Brep::join(&[], 1e-9).unwrap(), Vec::<Brep>::new());
-        assert_eq!(Brep::join(&[Brep::default()], 1e-9).unwrap(), Vec::<Brep>::new());
+        assert_eq!(
+            Brep::join(&[Brep::default()], 1e-9).unwrap(),
+            Vec::<Brep>::new()
+        );
         let mut nan = b.clone();
         nan.vertices[0].point.x = f64::NAN;
-        assert!(matches!(Brep::join(&[nan], 1e-9), Err(Error::NotFinite { .. })));
+        assert!(matches!(
+            Brep::join(&[nan], 1e-9),
+            Err(Error::NotFinite { .. })
+        ));
     }
 
     proptest! {

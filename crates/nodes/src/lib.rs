@@ -11,6 +11,8 @@
 //!   Text \[Txt\], Domain.
 //! - Geometry ([`params::geometry`]): Point \[Pt\], Vector \[Vec\], Plane \[Pln\].
 //! - Curve ([`params::curve`]): Curve \[Crv\].
+//! - Box, B-rep, any geometry, transforms ([`params::brep`]): Box, Brep, Geometry \[Geo\]
+//!   (Params › Geometry), Transform (Params › Primitive).
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -54,6 +56,14 @@
 //!   Shatter.
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
+//!
+//! **Surface** ([`surface`])
+//! - Boxes ([`surface::box_nodes`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
+//!   \[Box\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct
+//!   Box \[DeBox\] (Analysis).
+//! - B-reps ([`surface::brep`], [`surface::brep_analysis`]): Deconstruct Brep \[DeBrep\],
+//!   Brep Edges \[Edges\], Area, Volume, Singular Points \[Sing\] (the book's singularity
+//!   tutorial, not a stock Grasshopper component) (Analysis); Brep Join \[Join\] (Util).
 
 pub mod curve;
 pub mod expression;

@@ -256,11 +256,14 @@ mod tests {
         assert_eq!(out.len(), 6);
         assert_eq!(out[0], Some(bx));
         let p = out[1].unwrap();
-        assert_eq!((p.x, p.y, p.z), (
-            Interval::new(1.0, 1.0),
-            Interval::new(2.0, 2.0),
-            Interval::new(3.0, 3.0)
-        ));
+        assert_eq!(
+            (p.x, p.y, p.z),
+            (
+                Interval::new(1.0, 1.0),
+                Interval::new(2.0, 2.0),
+                Interval::new(3.0, 3.0)
+            )
+        );
         let s = out[2].unwrap();
         assert!((s.volume() - 64.0).abs() < 1e-9, "{s:?}");
         assert_eq!(out[3], None);
@@ -275,8 +278,8 @@ mod tests {
     #[test]
     fn brep_parameter_casts_boxes_and_surfaces() {
         let bx = OrientedBox::centered(&Plane::WORLD_XY, 1.0, 1.0, 1.0).unwrap();
-        let srf = NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT)
-            .unwrap();
+        let srf =
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap();
         let tree = generic(vec![
             Some(Value::Box(bx)),
             Some(Value::Surface(Shared::new(srf))),
@@ -306,7 +309,9 @@ mod tests {
             None,
         ];
         let tree = generic(geometry.clone());
-        let r = NodeCall::new(&geometry_param_type()).input(tree.clone()).run();
+        let r = NodeCall::new(&geometry_param_type())
+            .input(tree.clone())
+            .run();
         assert_clean(&r);
         assert_eq!(r.outputs[0], tree);
         let mut mixed = geometry;
@@ -319,7 +324,10 @@ mod tests {
         assert!(out[0].is_some() && out[1].is_some() && out[2].is_none() && out[3].is_none());
         let errors = messages(&r, Level::Error);
         assert_eq!(errors.len(), 1);
-        assert!(errors[0].contains("Transform → Geometry (item 3)"), "{errors:?}");
+        assert!(
+            errors[0].contains("Transform → Geometry (item 3)"),
+            "{errors:?}"
+        );
     }
 
     fn geometry_param_type() -> NodeType {

@@ -239,7 +239,10 @@ pub fn bounds_of(value: &Value, xform: Option<&Transform>) -> Result<BoundingBox
                 None => (*curve).clone(),
             };
             // Lines, polylines, circles and arcs have exact boxes of their own.
-            match cast_value(&Value::Curve(locus_runtime::Shared::new(curve.clone())), DataType::Box) {
+            match cast_value(
+                &Value::Curve(locus_runtime::Shared::new(curve.clone())),
+                DataType::Box,
+            ) {
                 Ok(Value::Box(b)) if !matches!(curve, locus_kernel::Curve::Nurbs(_)) => {
                     b.bounding_box()
                 }
@@ -392,7 +395,10 @@ pub fn bounding_box() -> NodeType {
                 .collect();
             let plane_boxes: Vec<Option<Value>> = local
                 .iter()
-                .map(|b| b.as_ref().map(|b| Value::Box(OrientedBox::from_bounding_box(b))))
+                .map(|b| {
+                    b.as_ref()
+                        .map(|b| Value::Box(OrientedBox::from_bounding_box(b)))
+                })
                 .collect();
             s.set_list_values(0, world);
             s.set_list_values(1, plane_boxes);
@@ -413,25 +419,19 @@ pub fn box_properties() -> NodeType {
         )
         .input(Port::new("Box", "B", DataType::Box).doc("The box to measure."))
         .output(Port::new("Center", "C", DataType::Point).doc("The centre of the box."))
-        .output(
-            Port::new("Diagonal", "D", DataType::Vector).doc(
-                "The diagonal, from the corner at the start of all three domains to the \
+        .output(Port::new("Diagonal", "D", DataType::Vector).doc(
+            "The diagonal, from the corner at the start of all three domains to the \
                  corner at their ends, in model units.",
-            ),
-        )
+        ))
         .output(
             Port::new("Area", "A", DataType::Number)
                 .doc("The area of the six sides, in square model units."),
         )
-        .output(
-            Port::new("Volume", "V", DataType::Number).doc("The volume, in cubic model units."),
-        )
-        .output(
-            Port::new("Degeneracy", "d", DataType::Integer).doc(
-                "0 = box, 1 = rectangle, 2 = line, 3 = point (the number of zero sizes), \
+        .output(Port::new("Volume", "V", DataType::Number).doc("The volume, in cubic model units."))
+        .output(Port::new("Degeneracy", "d", DataType::Integer).doc(
+            "0 = box, 1 = rectangle, 2 = line, 3 = point (the number of zero sizes), \
                  4 = invalid.",
-            ),
-        )
+        ))
         .solve(|s| {
             let b = *s.item::<OrientedBox>(0)?;
             if !b.is_finite() {
@@ -443,7 +443,9 @@ pub fn box_properties() -> NodeType {
             s.set(3, b.volume());
             let d = degeneracy(&b).map_or(INVALID_DEGENERACY, |d| d as i64);
             if d == INVALID_DEGENERACY {
-                s.warning("the box is not valid (its plane is not orthonormal or a domain decreases)");
+                s.warning(
+                    "the box is not valid (its plane is not orthonormal or a domain decreases)",
+                );
             }
             s.set(4, d);
             Ok(())
@@ -494,9 +496,7 @@ mod tests {
     use locus_runtime::{Branch, DataTree, Level, NodeCall, Shared, TreePath};
 
     use super::*;
-    use crate::vector::test_support::{
-        assert_clean, assert_error, is_null, items, messages, only,
-    };
+    use crate::vector::test_support::{assert_clean, assert_error, is_null, items, messages, only};
 
     fn close(a: Point3, b: Point3) -> bool {
         a.distance(b) < 1e-12
@@ -515,14 +515,20 @@ mod tests {
         assert_clean(&r);
         let b = only::<OrientedBox>(&r, 0);
         assert_eq!(b.plane, Plane::WORLD_XY);
-        assert_eq!((b.x, b.y, b.z), (
-            Interval::new(0.0, 2.0),
-            Interval::new(-1.0, 3.0),
-            Interval::new(1.0, 4.0)
-        ));
+        assert_eq!(
+            (b.x, b.y, b.z),
+            (
+                Interval::new(0.0, 2.0),
+                Interval::new(-1.0, 3.0),
+                Interval::new(1.0, 4.0)
+            )
+        );
         // On a tilted plane the corners are still corners.
         let plane = tilted();
-        let (a, c) = (plane.point_at(-1.0, 2.0, 0.5), plane.point_at(3.0, -2.0, 1.5));
+        let (a, c) = (
+            plane.point_at(-1.0, 2.0, 0.5),
+            plane.point_at(3.0, -2.0, 1.5),
+        );
         let r = NodeCall::new(&box_2pt())
             .input(DataTree::from_item(a))
             .input(DataTree::from_item(c))
@@ -593,7 +599,10 @@ mod tests {
             .run();
         assert_clean(&r);
         let b = only::<OrientedBox>(&r, 0);
-        assert_eq!((b.x, b.y, b.z), (Interval::new(1.0, 3.0), Interval::UNIT, Interval::UNIT));
+        assert_eq!(
+            (b.x, b.y, b.z),
+            (Interval::new(1.0, 3.0), Interval::UNIT, Interval::UNIT)
+        );
         let r = NodeCall::new(&domain_box())
             .skip_input()
             .input(DataTree::from_item(Interval::new(0.0, f64::NAN)))
@@ -716,8 +725,8 @@ mod tests {
 
     #[test]
     fn bounding_boxes_per_object_and_united() {
-        let sphere = Brep::from_sphere(&Sphere::new(Point3::new(5.0, 0.0, 0.0), 2.0).unwrap())
-            .unwrap();
+        let sphere =
+            Brep::from_sphere(&Sphere::new(Point3::new(5.0, 0.0, 0.0), 2.0).unwrap()).unwrap();
         let content = vec![
             Value::Point(Point3::new(1.0, 2.0, 3.0)),
             Value::Line(Line::new(Point3::ORIGIN, Point3::new(-1.0, 1.0, 0.0))),
@@ -776,7 +785,11 @@ mod tests {
     fn bounding_boxes_of_nurbs_curves_are_tight() {
         let parabola = NurbsCurve::new_non_rational(
             2,
-            vec![Point3::ORIGIN, Point3::new(1.0, 2.0, 0.0), Point3::new(2.0, 0.0, 0.0)],
+            vec![
+                Point3::ORIGIN,
+                Point3::new(1.0, 2.0, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+            ],
             vec![0.0, 0.0, 1.0, 1.0],
         )
         .unwrap();

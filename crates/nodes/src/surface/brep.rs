@@ -105,7 +105,11 @@ pub fn deconstruct_brep() -> NodeType {
             for i in 0..brep.faces().len() {
                 faces.push(Some(Value::Brep(Shared::new(brep.extract_face(i)?))));
             }
-            let edges = brep.edges().iter().map(|e| Some(edge_curve(&e.curve))).collect();
+            let edges = brep
+                .edges()
+                .iter()
+                .map(|e| Some(edge_curve(&e.curve)))
+                .collect();
             let vertices = brep.vertices().iter().map(|v| v.point).collect();
             s.set_list_values(0, faces);
             s.set_list_values(1, edges);
@@ -302,11 +306,23 @@ mod tests {
             let r = run(deconstruct_brep(), brep);
             assert_clean(&r);
             let want = |k: &str| case[k].as_u64().unwrap() as usize;
-            assert_eq!(counts(&r), (want("faces"), want("edges"), want("vertices")), "{name}");
+            assert_eq!(
+                counts(&r),
+                (want("faces"), want("edges"), want("vertices")),
+                "{name}"
+            );
             if let Some(locations) = case["vertex_locations"].as_array() {
-                let got: Vec<Point3> = items::<Point3>(&r.outputs[2]).into_iter().flatten().collect();
+                let got: Vec<Point3> = items::<Point3>(&r.outputs[2])
+                    .into_iter()
+                    .flatten()
+                    .collect();
                 for (g, w) in got.iter().zip(locations) {
-                    let w: Vec<f64> = w.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+                    let w: Vec<f64> = w
+                        .as_array()
+                        .unwrap()
+                        .iter()
+                        .map(|x| x.as_f64().unwrap())
+                        .collect();
                     assert!(g.distance(Point3::new(w[0], w[1], w[2])) < 1e-12, "{name}");
                 }
             }
@@ -317,13 +333,20 @@ mod tests {
     fn deconstructed_faces_and_edges() {
         let r = run(deconstruct_brep(), box_brep([2.0, 3.0, 4.0]));
         let faces = items::<Shared<Brep>>(&r.outputs[0]);
-        let areas: Vec<f64> = faces.iter().map(|f| f.as_ref().unwrap().area().unwrap()).collect();
+        let areas: Vec<f64> = faces
+            .iter()
+            .map(|f| f.as_ref().unwrap().area().unwrap())
+            .collect();
         // Front and back 2 × 4, right and left 3 × 4, bottom and top 2 × 3.
         for (a, want) in areas.iter().zip([8.0, 12.0, 8.0, 12.0, 6.0, 6.0]) {
             assert!((a - want).abs() < 1e-12, "{areas:?}");
         }
         let edges = items::<Shared<Curve>>(&r.outputs[1]);
-        assert!(edges.iter().all(|e| matches!(**e.as_ref().unwrap(), Curve::Line { .. })));
+        assert!(
+            edges
+                .iter()
+                .all(|e| matches!(**e.as_ref().unwrap(), Curve::Line { .. }))
+        );
         let total: f64 = edges.iter().map(|e| e.as_ref().unwrap().length()).sum();
         assert!((total - 4.0 * (2.0 + 3.0 + 4.0)).abs() < 1e-12);
         // A sphere's seam is a NURBS half circle of length πr.
@@ -338,8 +361,11 @@ mod tests {
         let r = run(deconstruct_brep(), Shared::new(Brep::default()));
         assert_eq!(counts(&r), (0, 0, 0));
         assert_eq!(messages(&r, Level::Warning).len(), 1);
-        let nan = box_brep([1.0, 1.0, 1.0])
-            .transformed(&Transform::translation(Vector3::new(f64::NAN, 0.0, 0.0)));
+        let nan = box_brep([1.0, 1.0, 1.0]).transformed(&Transform::translation(Vector3::new(
+            f64::NAN,
+            0.0,
+            0.0,
+        )));
         assert!(nan.is_err(), "the kernel refuses to make a NaN brep");
         let r = NodeCall::new(&deconstruct_brep())
             .input(DataTree::from_value(Value::Number(1.0)))
@@ -372,13 +398,18 @@ mod tests {
     #[test]
     fn brep_join_rebuilds_an_exploded_box() {
         let b = box_brep([2.0, 3.0, 4.0]);
-        let faces: Vec<Shared<Brep>> = (0..6).map(|i| Shared::new(b.extract_face(i).unwrap())).collect();
+        let faces: Vec<Shared<Brep>> = (0..6)
+            .map(|i| Shared::new(b.extract_face(i).unwrap()))
+            .collect();
         let r = join(faces.clone());
         assert_clean(&r);
         let joined = items::<Shared<Brep>>(&r.outputs[0]);
         assert_eq!(joined.len(), 1);
         let j = joined[0].as_ref().unwrap();
-        assert_eq!((j.faces().len(), j.edges().len(), j.vertices().len()), (6, 12, 8));
+        assert_eq!(
+            (j.faces().len(), j.edges().len(), j.vertices().len()),
+            (6, 12, 8)
+        );
         assert!((j.volume().unwrap() - 24.0).abs() < 1e-12);
         assert_eq!(items::<bool>(&r.outputs[1]), vec![Some(true)]);
         // Five faces: one open polysurface with four naked edges.
@@ -424,10 +455,13 @@ mod tests {
         assert_clean(&r);
         assert_eq!(
             items::<Point3>(&r.outputs[0]),
-            vec![Some(Point3::new(0.0, 0.0, -2.0)), Some(Point3::new(0.0, 0.0, 2.0))]
+            vec![
+                Some(Point3::new(0.0, 0.0, -2.0)),
+                Some(Point3::new(0.0, 0.0, 2.0))
+            ]
         );
-        let plane = Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(0.0, 1.0, 1.0))
-            .unwrap();
+        let plane =
+            Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(0.0, 1.0, 1.0)).unwrap();
         let cone = Cone::new(plane, 4.0, 1.5).unwrap();
         for capped in [false, true] {
             let b = Shared::new(Brep::from_cone(&cone, capped).unwrap());
@@ -439,7 +473,10 @@ mod tests {
         let r = run(singular_points(), box_brep([1.0, 1.0, 1.0]));
         assert_eq!(r.outputs[0].item_count(), 0);
         let cyl = Brep::from_cylinder(&Cylinder::new(plane, 1.0, 1.0).unwrap(), true).unwrap();
-        assert_eq!(run(singular_points(), Shared::new(cyl)).outputs[0].item_count(), 0);
+        assert_eq!(
+            run(singular_points(), Shared::new(cyl)).outputs[0].item_count(),
+            0
+        );
         let r = NodeCall::new(&singular_points()).run();
         assert!(r.outputs[0].is_empty() || r.outputs[0].item_count() == 0);
     }

@@ -70,10 +70,7 @@ pub fn area() -> NodeType {
             "The geometry to measure: a B-rep, surface, box, or closed planar curve (circle, \
              polyline, NURBS curve).",
         ))
-        .output(
-            Port::new("Area", "A", DataType::Number)
-                .doc("The area, in square model units."),
-        )
+        .output(Port::new("Area", "A", DataType::Number).doc("The area, in square model units."))
         .output(
             Port::new("Centroid", "C", DataType::Point)
                 .doc("The area centroid: the mean of the geometry's points weighted by area."),
@@ -142,7 +139,10 @@ fn curve_area(curve: &Curve) -> Result<(f64, Point3), NodeError> {
         return Err("the curve is not valid (not finite, or of zero length)".into());
     }
     if let Curve::Circle { circle, .. } = curve {
-        return Ok((std::f64::consts::PI * circle.radius * circle.radius, circle.plane.origin));
+        return Ok((
+            std::f64::consts::PI * circle.radius * circle.radius,
+            circle.plane.origin,
+        ));
     }
     if !curve.is_closed() {
         return Err("the curve is not closed, so it bounds no area".into());
@@ -243,9 +243,7 @@ pub fn volume() -> NodeType {
         .input(geometry_input(
             "The closed geometry to measure: a closed B-rep, a closed surface, or a box.",
         ))
-        .output(
-            Port::new("Volume", "V", DataType::Number).doc("The volume, in cubic model units."),
-        )
+        .output(Port::new("Volume", "V", DataType::Number).doc("The volume, in cubic model units."))
         .output(
             Port::new("Centroid", "C", DataType::Point)
                 .doc("The volume centroid: the centre of mass of a uniform solid."),
@@ -349,8 +347,9 @@ mod tests {
         let r = run(area(), brep(Brep::from_sphere(&s).unwrap()));
         assert!((only::<f64>(&r, 0) - 16.0 * PI).abs() < 1e-9);
         assert_near(only::<Point3>(&r, 1), c, 1e-9);
-        let srf = NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::new(0.0, 2.0), Interval::UNIT)
-            .unwrap();
+        let srf =
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::new(0.0, 2.0), Interval::UNIT)
+                .unwrap();
         let r = run(area(), Value::Surface(Shared::new(srf)));
         assert!((only::<f64>(&r, 0) - 2.0).abs() < 1e-12);
         assert_near(only::<Point3>(&r, 1), Point3::new(1.0, 0.5, 0.0), 1e-12);
@@ -358,8 +357,8 @@ mod tests {
 
     #[test]
     fn areas_of_closed_planar_curves() {
-        let plane = Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, 1.0, 1.0))
-            .unwrap();
+        let plane =
+            Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, 1.0, 1.0)).unwrap();
         let circle = Circle::new(plane, 1.5).unwrap();
         let r = run(area(), Value::Circle(circle));
         assert_eq!(only::<f64>(&r, 0), PI * 2.25);
@@ -367,7 +366,11 @@ mod tests {
         // The same circle as a rational NURBS curve, by quadrature.
         let nurbs = Curve::from(circle).to_nurbs();
         let r = run(area(), Value::Curve(Shared::new(Curve::Nurbs(nurbs))));
-        assert!((only::<f64>(&r, 0) - PI * 2.25).abs() < 1e-12, "{}", only::<f64>(&r, 0));
+        assert!(
+            (only::<f64>(&r, 0) - PI * 2.25).abs() < 1e-12,
+            "{}",
+            only::<f64>(&r, 0)
+        );
         assert_near(only::<Point3>(&r, 1), plane.origin, 1e-12);
         // An L-shaped polyline: area 3, centroid by hand from squares at (0.5, 0.5),
         // (1.5, 0.5) and (0.5, 1.5): (5/6, 5/6).
@@ -383,7 +386,11 @@ mod tests {
         .unwrap();
         let r = run(area(), Value::Curve(Shared::new(Curve::from(l.clone()))));
         assert!((only::<f64>(&r, 0) - 3.0).abs() < 1e-14);
-        assert_near(only::<Point3>(&r, 1), Point3::new(5.0 / 6.0, 5.0 / 6.0, 0.0), 1e-14);
+        assert_near(
+            only::<Point3>(&r, 1),
+            Point3::new(5.0 / 6.0, 5.0 / 6.0, 0.0),
+            1e-14,
+        );
         // Clockwise gives the same.
         let mut pts = l.points().to_vec();
         pts.reverse();
@@ -396,7 +403,10 @@ mod tests {
     fn area_bad_input() {
         let line = Line::new(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0));
         assert_error(&run(area(), Value::Line(line)), "not closed");
-        assert_error(&run(area(), Value::Point(Point3::ORIGIN)), "a point has no area");
+        assert_error(
+            &run(area(), Value::Point(Point3::ORIGIN)),
+            "a point has no area",
+        );
         let bent = Polyline::new(vec![
             Point3::ORIGIN,
             Point3::new(1.0, 0.0, 0.0),
@@ -405,14 +415,21 @@ mod tests {
             Point3::ORIGIN,
         ])
         .unwrap();
-        assert_error(&run(area(), Value::Curve(Shared::new(Curve::from(bent)))), "not planar");
+        assert_error(
+            &run(area(), Value::Curve(Shared::new(Curve::from(bent)))),
+            "not planar",
+        );
         let flat = Polyline::new(vec![
             Point3::ORIGIN,
             Point3::new(1.0, 0.0, 0.0),
             Point3::ORIGIN,
         ])
         .unwrap();
-        assert!(!run(area(), Value::Curve(Shared::new(Curve::from(flat)))).messages.is_empty());
+        assert!(
+            !run(area(), Value::Curve(Shared::new(Curve::from(flat))))
+                .messages
+                .is_empty()
+        );
         let nan = NurbsCurve::new_non_rational(
             1,
             vec![Point3::ORIGIN, Point3::new(f64::NAN, 0.0, 0.0)],
@@ -449,8 +466,8 @@ mod tests {
         let r = run(volume(), Value::Surface(Shared::new(s.to_nurbs().unwrap())));
         assert!((only::<f64>(&r, 0) - 32.0 / 3.0 * PI).abs() < 1e-9);
         // A capped cylinder: πr²h, centroid halfway up the axis.
-        let cyl = Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.5, 4.0).unwrap(), true)
-            .unwrap();
+        let cyl =
+            Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.5, 4.0).unwrap(), true).unwrap();
         let r = run(volume(), brep(cyl));
         assert!((only::<f64>(&r, 0) - PI * 2.25 * 4.0).abs() < 1e-9);
         assert_near(only::<Point3>(&r, 1), Point3::new(0.0, 0.0, 2.0), 1e-9);
@@ -462,14 +479,23 @@ mod tests {
         let r = run(volume(), brep(b.extract_face(0).unwrap()));
         assert_error(&r, "not closed (4 naked edges)");
         assert!(is_null(&r, 0) && is_null(&r, 1));
-        let srf = NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap();
-        assert_error(&run(volume(), Value::Surface(Shared::new(srf))), "not closed");
+        let srf =
+            NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap();
+        assert_error(
+            &run(volume(), Value::Surface(Shared::new(srf))),
+            "not closed",
+        );
         assert_error(
             &run(volume(), Value::Point(Point3::ORIGIN)),
             "a point encloses no volume",
         );
         assert_error(&run(volume(), brep(Brep::default())), "not closed");
-        let flat = OrientedBox::new(Plane::WORLD_XY, Interval::UNIT, Interval::UNIT, Interval::new(0.0, 0.0));
+        let flat = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::new(0.0, 0.0),
+        );
         assert_eq!(only::<f64>(&run(volume(), Value::Box(flat)), 0), 0.0);
     }
 }
