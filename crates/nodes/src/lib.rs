@@ -58,7 +58,7 @@
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
 //!
 //! **Surface** ([`surface`])
-//! - Boxes ([`surface::box_nodes`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
+//! - Boxes ([`surface::box_nodes`], [`surface::bounding_box`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
 //!   \[Box\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct
 //!   Box \[DeBox\] (Analysis).
 //! - B-reps ([`surface::brep`], [`surface::brep_analysis`]): Deconstruct Brep \[DeBrep\],

@@ -2,7 +2,7 @@
 //! parameters are registered under their ids, in the category and subcategory they belong to.
 
 use locus_nodes::params::brep as params;
-use locus_nodes::surface::{box_nodes, brep, brep_analysis};
+use locus_nodes::surface::{bounding_box, box_nodes, brep, brep_analysis};
 use locus_runtime::NodeRegistry;
 
 #[test]
@@ -13,7 +13,7 @@ fn box_and_brep_ids_are_registered() {
         (box_nodes::BOX_2PT, "Surface", "Primitive"),
         (box_nodes::CENTER_BOX, "Surface", "Primitive"),
         (box_nodes::DOMAIN_BOX, "Surface", "Primitive"),
-        (box_nodes::BOUNDING_BOX, "Surface", "Primitive"),
+        (bounding_box::BOUNDING_BOX, "Surface", "Primitive"),
         (box_nodes::BOX_PROPERTIES, "Surface", "Analysis"),
         (box_nodes::DECONSTRUCT_BOX, "Surface", "Analysis"),
         (brep::DECONSTRUCT_BREP, "Surface", "Analysis"),
@@ -40,7 +40,7 @@ fn box_and_brep_ids_are_registered() {
     // Grasshopper's nicknames.
     for (id, nickname) in [
         (box_nodes::BOX_2PT, "Box"),
-        (box_nodes::BOUNDING_BOX, "BBox"),
+        (bounding_box::BOUNDING_BOX, "BBox"),
         (box_nodes::BOX_PROPERTIES, "BoxProp"),
         (box_nodes::DECONSTRUCT_BOX, "DeBox"),
         (brep::DECONSTRUCT_BREP, "DeBrep"),

@@ -14,7 +14,7 @@
 
 use locus_runtime::{Branch, DataType, NodeRegistry, NodeType, Port, Solve, Value, cast_value};
 
-use crate::surface::box_nodes::box_from_value;
+use crate::surface::bounding_box::box_from_value;
 
 /// Id of [`brep`].
 pub const BREP: &str = "params.brep";
