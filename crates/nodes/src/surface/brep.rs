@@ -384,6 +384,25 @@ mod tests {
         assert_eq!(counts(&r), (2, 1, 0));
         let naked = items::<Shared<Curve>>(&r.outputs[0]);
         assert!((naked[0].as_ref().unwrap().length() - 2.0 * PI).abs() < 1e-9);
+        // A square with a square hole: eight naked edges, and its area is 16 − 1.
+        let square = [
+            Point3::ORIGIN,
+            Point3::new(4.0, 0.0, 0.0),
+            Point3::new(4.0, 4.0, 0.0),
+            Point3::new(0.0, 4.0, 0.0),
+        ];
+        let hole = vec![
+            Point3::new(1.0, 1.0, 0.0),
+            Point3::new(2.0, 1.0, 0.0),
+            Point3::new(2.0, 2.0, 0.0),
+            Point3::new(1.0, 2.0, 0.0),
+        ];
+        let holed = Shared::new(Brep::from_planar_polylines(&square, &[hole], 1e-9).unwrap());
+        assert_eq!(counts(&run(brep_edges(), holed.clone())), (8, 0, 0));
+        let r = run(deconstruct_brep(), holed);
+        assert_eq!(counts(&r), (1, 8, 8));
+        let face = items::<Shared<Brep>>(&r.outputs[0]).remove(0).unwrap();
+        assert!((face.area().unwrap() - 15.0).abs() < 1e-12);
         // One face of a box: four naked edges.
         let face = Shared::new(box_brep([1.0, 1.0, 1.0]).extract_face(0).unwrap());
         assert_eq!(counts(&run(brep_edges(), face)), (4, 0, 0));
