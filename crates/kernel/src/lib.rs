@@ -26,6 +26,7 @@ mod bezier;
 mod bounding_box;
 mod brep;
 mod brep_builders;
+mod brep_join;
 mod brep_mass;
 mod circle;
 mod continuity;

@@ -145,6 +145,16 @@ impl NurbsSurface {
     }
 }
 
+impl NurbsCurve {
+    /// The tight axis-aligned bounding box of the curve: its ends and the points where a
+    /// coordinate's derivative vanishes (as for B-rep edges).
+    pub fn bounding_box(&self) -> BoundingBox {
+        let mut bbox = BoundingBox::EMPTY;
+        include_curve(self, &mut bbox);
+        bbox
+    }
+}
+
 /// Grows `bbox` to the tight box of a NURBS curve: its ends and the points where a
 /// coordinate's derivative vanishes.
 pub(crate) fn include_curve(curve: &NurbsCurve, bbox: &mut BoundingBox) {
@@ -335,6 +345,23 @@ mod tests {
             // Dense sampling reaches the true extremes to second order in the spacing.
             assert!(close(&bbox, &sampled, 1e-4));
         }
+    }
+
+    #[test]
+    fn curve_box_is_tight() {
+        // A parabola through (0,0), (1,1), (2,0): its control points reach y = 2.
+        let c = NurbsCurve::new_non_rational(
+            2,
+            vec![
+                Point3::ORIGIN,
+                Point3::new(1.0, 2.0, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+            ],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        let expected = BoundingBox::new(Point3::ORIGIN, Point3::new(2.0, 1.0, 0.0));
+        assert!(close(&c.bounding_box(), &expected, 1e-14));
     }
 
     #[test]

@@ -12,6 +12,8 @@
 //! - Geometry ([`params::geometry`]): Point \[Pt\], Vector \[Vec\], Plane \[Pln\].
 //! - Curve ([`params::curve`]): Curve \[Crv\].
 //! - Surface ([`params::surface`]): Surface \[Srf\].
+//! - Box, B-rep, any geometry, transforms ([`params::brep`]): Box, Brep, Geometry \[Geo\]
+//!   (Params › Geometry), Transform (Params › Primitive).
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -74,6 +76,12 @@
 //!   \[Srf CP\], Principal Curvature \[Curvature\], Surface Curvature \[Curvature\].
 //! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].
 //! - The Surface parameter \[Srf\] is in [`params::surface`].
+//! - Boxes ([`surface::box_nodes`], [`surface::bounding_box`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
+//!   \[Box\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct
+//!   Box \[DeBox\] (Analysis).
+//! - B-reps ([`surface::brep`], [`surface::brep_analysis`]): Deconstruct Brep \[DeBrep\],
+//!   Brep Edges \[Edges\], Area, Volume, Singular Points \[Sing\] (the book's singularity
+//!   tutorial, not a stock Grasshopper component) (Analysis); Brep Join \[Join\] (Util).
 
 pub mod curve;
 pub mod expression;

@@ -167,9 +167,18 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
     let geometry_params = registry
         .iter()
         .filter(|t| t.category == "Params" && t.subcategory == "Geometry")
-        // The Curve and Surface parameters belong to the curve and surface nodes and are
-        // checked with them.
-        .filter(|t| !matches!(t.id.as_str(), "params.curve" | "params.surface"))
+        // The Curve, Surface, Brep, Box and Geometry parameters belong to the curve and
+        // surface nodes and are checked with them.
+        .filter(|t| {
+            ![
+                "params.curve",
+                "params.surface",
+                "params.brep",
+                "params.box",
+                "params.geometry",
+            ]
+            .contains(&t.id.as_str())
+        })
         .count();
     assert_eq!(vector_and_transform + geometry_params, ids.len());
 }

@@ -3,8 +3,10 @@
 //! Surface, Isocurve), boxes and B-reps.
 
 pub mod analysis;
+pub mod bounding_box;
 pub mod box_nodes;
 pub mod brep;
+pub mod brep_analysis;
 pub mod freeform;
 pub mod primitive;
 pub mod util;
@@ -18,5 +20,7 @@ pub fn register(registry: &mut NodeRegistry) {
     analysis::register(registry);
     util::register(registry);
     box_nodes::register(registry);
+    bounding_box::register(registry);
     brep::register(registry);
+    brep_analysis::register(registry);
 }
