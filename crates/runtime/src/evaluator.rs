@@ -27,6 +27,20 @@ pub enum EvalError {
         /// The graph's input names, comma-separated.
         known: String,
     },
+    /// No node has this id.
+    #[error("unknown node \"{id}\"")]
+    UnknownNode {
+        /// The id asked for.
+        id: String,
+    },
+    /// A value given as literal text could not be read against the input's type.
+    #[error("bad value for input \"{name}\": {message}")]
+    BadValue {
+        /// The input's name.
+        name: String,
+        /// What is wrong with the text.
+        message: String,
+    },
     /// A thread pool could not be built.
     #[error("cannot start {threads} threads: {reason}")]
     ThreadPool {
@@ -195,6 +209,29 @@ impl Evaluator {
             && self.overrides[k].take().is_some()
         {
             self.mark_dirty(self.plan.inputs[k].1);
+        }
+    }
+
+    /// Marks node `node` (by id) and everything downstream of it for re-evaluation, as
+    /// Grasshopper's "expire solution" does: for hosts whose data changed behind the graph's back.
+    ///
+    /// # Errors
+    /// [`EvalError::UnknownNode`] when the graph has no node of that id.
+    pub fn expire(&mut self, node: &str) -> Result<(), EvalError> {
+        let Some(i) = self.plan.nodes.iter().position(|n| n.id.0 == node) else {
+            return Err(EvalError::UnknownNode {
+                id: node.to_owned(),
+            });
+        };
+        self.mark_dirty(i);
+        Ok(())
+    }
+
+    /// Marks every node for re-evaluation (a full recompute on the next
+    /// [`evaluate`](Self::evaluate)).
+    pub fn expire_all(&mut self) {
+        for state in &mut self.states {
+            state.dirty = true;
         }
     }
 

@@ -18,6 +18,7 @@ mod format;
 mod graph;
 mod iterate;
 mod literal;
+mod literal_geometry;
 mod message;
 mod node;
 mod path;
