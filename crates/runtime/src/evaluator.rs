@@ -189,10 +189,7 @@ impl Evaluator {
     /// [`EvalError::UnknownInput`] when the graph has no input of that name.
     pub fn set_input(&mut self, name: &str, tree: DataTree) -> Result<(), EvalError> {
         let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name) else {
-            return Err(EvalError::UnknownInput {
-                name: name.to_owned(),
-                known: self.input_names().collect::<Vec<_>>().join(", "),
-            });
+            return Err(self.unknown_input(name));
         };
         if self.overrides[k].as_ref() == Some(&tree) {
             return Ok(());
@@ -201,6 +198,19 @@ impl Evaluator {
         let node = self.plan.inputs[k].1;
         self.mark_dirty(node);
         Ok(())
+    }
+
+    /// The error for an input name the graph does not have.
+    pub(crate) fn unknown_input(&self, name: &str) -> EvalError {
+        let known: Vec<&str> = self.input_names().collect();
+        EvalError::UnknownInput {
+            name: name.to_owned(),
+            known: if known.is_empty() {
+                "none".to_owned()
+            } else {
+                known.join(", ")
+            },
+        }
     }
 
     /// Removes a value given with [`set_input`](Self::set_input), going back to the graph's.
@@ -463,6 +473,12 @@ impl Evaluator {
     /// the graph's node order.
     pub fn messages(&self) -> impl Iterator<Item = &Message> {
         self.states.iter().flat_map(|s| s.messages.iter())
+    }
+
+    /// The runtime messages of one node (by id) from its last run; none for an unknown id.
+    pub fn node_messages(&self, node: &str) -> impl Iterator<Item = &Message> {
+        let i = self.plan.nodes.iter().position(|n| n.id.0 == node);
+        i.into_iter().flat_map(|i| self.states[i].messages.iter())
     }
 
     /// The worst message level of a node, if it has messages.

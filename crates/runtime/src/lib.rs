@@ -1,7 +1,91 @@
 //! The node runtime of locus: data trees, typed ports, Grasshopper matching and evaluation.
 //!
 //! The runtime names no concrete node: node types are registered by the node library (or by a
-//! host) in a `NodeRegistry` value.
+//! host) in a [`NodeRegistry`] value.
+//!
+//! # Hosting a graph
+//!
+//! A host builds a registry, loads a graph ([`Evaluator::from_text`], [`Evaluator::from_file`],
+//! or [`Document::parse`] → [`Document::check`] → [`Checked::into_evaluator`] to see the
+//! warnings), sets named inputs as data trees ([`Evaluator::set_input`]) or as literal text read
+//! against the input's type ([`Evaluator::set_input_text`], as `locus run --set` does),
+//! evaluates, and reads named outputs ([`Evaluator::output`]) and per-node messages
+//! ([`Evaluator::node_messages`]). After an input changes, the next evaluation runs only the
+//! nodes downstream of it ([`Evaluator::last_run`] says which). Evaluators, plans and registries
+//! are `Send + Sync`, so a host can hold many graphs and evaluate them on several threads.
+//!
+//! ```
+//! use locus_runtime::{DataTree, DataType, EvalError, Evaluator, NodeRegistry, NodeType, Port};
+//!
+//! // The node types the graphs use: here one, declared on the spot.
+//! let mut registry = NodeRegistry::new();
+//! registry.register(
+//!     NodeType::new("maths.addition", "Addition", "A+B", "Maths")
+//!         .input(Port::new("A", "A", DataType::Number))
+//!         .input(Port::new("B", "B", DataType::Number).default_value(0.0))
+//!         .output(Port::new("Result", "R", DataType::Number))
+//!         .solve(|s| {
+//!             let sum = *s.item::<f64>(0)? + *s.item::<f64>(1)?;
+//!             if !sum.is_finite() {
+//!                 return Err("the sum is not finite".into());
+//!             }
+//!             s.set(0, sum);
+//!             Ok(())
+//!         }),
+//! );
+//! let text = r#"(
+//!     format: 1,
+//!     nodes: [
+//!         (id: "first", type: "maths.addition", values: {"B": 10}),
+//!         (id: "second", type: "maths.addition", values: {"B": 100}),
+//!         (id: "other", type: "maths.addition", values: {"A": 1, "B": 2}),
+//!     ],
+//!     wires: [("first.R", "second.A")],
+//!     inputs: {"x": "first.A"},
+//!     outputs: {"sum": "second.R", "other": "other.R"},
+//! )"#;
+//! let mut graph = Evaluator::from_text(text, &registry).expect("a valid graph");
+//!
+//! // Set a named input as a data tree and evaluate.
+//! graph.set_input("x", DataTree::from_list(vec![1.0, 2.0]))?;
+//! graph.evaluate();
+//! assert_eq!(graph.output("sum"), Some(&DataTree::from_list(vec![111.0, 112.0])));
+//! assert_eq!(graph.output("other"), Some(&DataTree::from_item(3.0)));
+//!
+//! // Change it (here as literal text) and evaluate again: only the nodes downstream run.
+//! graph.set_input_text("x", "[5, inf]")?;
+//! graph.evaluate();
+//! let ran: Vec<&str> = graph.last_run().iter().map(|id| id.0.as_str()).collect();
+//! assert_eq!(ran, ["first", "second"]);
+//! // A failing iteration leaves a null and a message naming its path and index; the rest runs.
+//! let sum = graph.output("sum").expect("a named output");
+//! assert_eq!(sum.to_text(), "{0}:[115, null]");
+//! let messages: Vec<String> = graph.node_messages("first").map(|m| m.to_string()).collect();
+//! assert_eq!(messages, ["error: node \"first\" at {0}[1]: the sum is not finite"]);
+//!
+//! // Bad requests name the input.
+//! assert_eq!(
+//!     graph.set_input_text("y", "1").unwrap_err().to_string(),
+//!     "unknown input \"y\" (the graph's inputs are: x)"
+//! );
+//! assert!(matches!(graph.set_input_text("x", "(1, 2, 3)"), Err(EvalError::BadValue { .. })));
+//!
+//! // Many graphs at once, from a file too, evaluated on their own threads.
+//! let path = std::env::temp_dir().join(format!("locus-host-example-{}.ron", std::process::id()));
+//! std::fs::write(&path, text).expect("a writable temporary directory");
+//! let mut graphs = vec![graph, Evaluator::from_file(&path, &registry)?];
+//! std::fs::remove_file(&path).ok();
+//! for (k, g) in graphs.iter_mut().enumerate() {
+//!     g.set_input("x", DataTree::from_item(k as f64))?;
+//! }
+//! std::thread::scope(|scope| {
+//!     for g in &mut graphs {
+//!         scope.spawn(move || g.evaluate());
+//!     }
+//! });
+//! assert_eq!(graphs[1].output("sum"), Some(&DataTree::from_item(111.0)));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 mod call;
 mod cast;
@@ -16,6 +100,7 @@ mod dot;
 mod evaluator;
 mod format;
 mod graph;
+mod host;
 mod iterate;
 mod literal;
 mod literal_geometry;
@@ -44,6 +129,7 @@ pub use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection,
 pub use crate::dot::to_dot;
 pub use crate::evaluator::{EvalError, Evaluator};
 pub use crate::format::{Document, write_graph};
+pub use crate::host::{LoadError, load_file};
 pub use crate::graph::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
     Wire,

@@ -20,21 +20,24 @@
 //! | Text | `"abc"` with RON escapes (`\"`, `\\`, `\n`, `\u{e9}`) |
 //! | Point, Vector | `(1, 2, 3)` |
 //! | Domain | `(0, 1)`, start then end |
-//! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `ZX` |
+//! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `XZ`, `ZX` |
 //! | Transform | `((a, b, c, d), (e, f, g, h), (i, j, k, l), (m, n, o, p))`: four rows |
+//! | Line, Box, Circle, Arc, Curve, Surface, Brep | see `literal_geometry.rs` |
 //!
-//! Any item may carry its type's name as a tag, `Vector(1, 2, 3)`, `Integer(3)`, `Text("a")`;
-//! a tag must name the port's type. On a `Generic` port the type is taken from the tag, or else from the shape: an integer
-//! without decimal point is an Integer, other numbers are Numbers, `(x, y, z)` is a Point,
-//! `(a, b)` a Domain, three triples a Plane, four quadruples a Transform. The writer tags
-//! vectors in generic trees so that they read back as vectors.
+//! Any item may carry a type's name as a tag, `Vector(1, 2, 3)`, `Integer(3)`, `Text("a")`,
+//! `Box(plane: XY, …)`. A tag of another type than the port's reads the item as that type and
+//! casts it to the port's type as a wire would (`Box(…)` on a Brep port). On a `Generic` port
+//! the type is taken from the tag, or else from the shape: an integer without decimal point is
+//! an Integer, other numbers are Numbers, `(x, y, z)` is a Point, `(a, b)` a Domain, two triples
+//! a Line, three triples a Plane, four quadruples a Transform, and a struct by its field names.
+//! The writer tags vectors in generic trees so that they read back as vectors.
 //!
 //! The axes of a plane are taken as written when they are orthonormal to within
 //! [`UNIT_AXIS_TOLERANCE`] (so that written planes read back exactly); otherwise the y axis is
 //! made perpendicular to the x axis and both are normalized (Gram–Schmidt).
 //!
-//! New value types add their literal form in [`parse_item`] and [`item_node`], typically as a
-//! named struct: `Curve(degree: 3, points: [...], weights: [...], knots: [...])`.
+//! New value types add their literal form in [`parse_item`] and [`item_node`] (geometry in
+//! `literal_geometry`), typically as a struct with named fields.
 
 use std::fmt;
 use std::ops::Range;
