@@ -13,30 +13,34 @@ use locus_runtime::{DataTree, DataType, Document, Evaluator, NodeRegistry, NodeT
 
 const N: usize = 1_000_000;
 
+/// Move and Addition, each declared twice: as a lifted item function (`lift2`, the runtime's
+/// loop over typed columns) and as a general solve function called once per item.
 fn registry() -> NodeRegistry {
     let mut r = NodeRegistry::new();
-    r.register(
-        NodeType::new("bench.move", "Move", "Move", "Bench")
+    let move_type = |id: &str| {
+        NodeType::new(id, "Move", "Move", "Bench")
             .input(Port::new("Geometry", "G", DataType::Point))
             .input(Port::new("Motion", "T", DataType::Vector))
             .output(Port::new("Geometry", "G", DataType::Point))
-            .solve(|s| {
-                let (p, v) = (*s.item::<Point3>(0)?, *s.item::<Vector3>(1)?);
-                s.set(0, p + v);
-                Ok(())
-            }),
-    );
-    r.register(
-        NodeType::new("bench.addition", "Addition", "A+B", "Bench")
+    };
+    r.register(move_type("bench.move").lift2(|p: &Point3, v: &Vector3| Ok(*p + *v)));
+    r.register(move_type("bench.move_solve").solve(|s| {
+        let (p, v) = (*s.item::<Point3>(0)?, *s.item::<Vector3>(1)?);
+        s.set(0, p + v);
+        Ok(())
+    }));
+    let add_type = |id: &str| {
+        NodeType::new(id, "Addition", "A+B", "Bench")
             .input(Port::new("A", "A", DataType::Number))
             .input(Port::new("B", "B", DataType::Number))
             .output(Port::new("Result", "R", DataType::Number))
-            .solve(|s| {
-                let (a, b) = (*s.item::<f64>(0)?, *s.item::<f64>(1)?);
-                s.set(0, a + b);
-                Ok(())
-            }),
-    );
+    };
+    r.register(add_type("bench.addition").lift2(|a: &f64, b: &f64| Ok(a + b)));
+    r.register(add_type("bench.addition_solve").solve(|s| {
+        let (a, b) = (*s.item::<f64>(0)?, *s.item::<f64>(1)?);
+        s.set(0, a + b);
+        Ok(())
+    }));
     r
 }
 
@@ -47,19 +51,27 @@ fn evaluator(text: &str, registry: &NodeRegistry, threads: usize) -> Evaluator {
     e
 }
 
-const MOVE: &str = r#"(
+fn move_graph(node_type: &str) -> String {
+    format!(
+        r#"(
     format: 1,
-    nodes: [(id: "move", type: "bench.move", values: {"T": (1, 2, 3)})],
-    inputs: {"points": "move.G"},
-    outputs: {"moved": "move.G"},
-)"#;
+    nodes: [(id: "move", type: "{node_type}", values: {{"T": (1, 2, 3)}})],
+    inputs: {{"points": "move.G"}},
+    outputs: {{"moved": "move.G"}},
+)"#
+    )
+}
 
-const ADD: &str = r#"(
+fn add_graph(node_type: &str) -> String {
+    format!(
+        r#"(
     format: 1,
-    nodes: [(id: "add", type: "bench.addition")],
-    inputs: {"a": "add.A", "b": "add.B"},
-    outputs: {"sum": "add.R"},
-)"#;
+    nodes: [(id: "add", type: "{node_type}")],
+    inputs: {{"a": "add.A", "b": "add.B"}},
+    outputs: {{"sum": "add.R"}},
+)"#
+    )
+}
 
 fn chain(n: usize) -> String {
     let mut text = String::from("(\n    format: 1,\n    nodes: [\n");
@@ -105,15 +117,16 @@ fn lifting(c: &mut Criterion) {
             moved
         });
     });
-    for threads in [1, 2] {
-        let mut e = evaluator(MOVE, &registry, threads);
+    for (node_type, threads) in [("bench.move", 1), ("bench.move", 2), ("bench.move_solve", 1)] {
+        let mut e = evaluator(&move_graph(node_type), &registry, threads);
         e.set_input("points", DataTree::from_list(pts.clone()))
             .unwrap();
         e.evaluate();
         assert_eq!(e.output("moved").unwrap().item_count(), N);
-        g.bench_function(format!("graph: move 1M points, {threads} thread(s)"), |b| {
-            b.iter(|| rerun(&mut e));
-        });
+        g.bench_function(
+            format!("graph: move 1M points ({node_type}), {threads} thread(s)"),
+            |b| b.iter(|| rerun(&mut e)),
+        );
     }
     let (a, bb) = (numbers(1.0), numbers(0.25));
     g.bench_function("hand loop: add two 1M-number lists", |b| {
@@ -126,14 +139,18 @@ fn lifting(c: &mut Criterion) {
             sum
         });
     });
-    for threads in [1, 2] {
-        let mut e = evaluator(ADD, &registry, threads);
+    for (node_type, threads) in [
+        ("bench.addition", 1),
+        ("bench.addition", 2),
+        ("bench.addition_solve", 1),
+    ] {
+        let mut e = evaluator(&add_graph(node_type), &registry, threads);
         e.set_input("a", DataTree::from_list(a.clone())).unwrap();
         e.set_input("b", DataTree::from_list(bb.clone())).unwrap();
         e.evaluate();
         assert_eq!(e.output("sum").unwrap().item_count(), N);
         g.bench_function(
-            format!("graph: add two 1M-number lists, {threads} thread(s)"),
+            format!("graph: add two 1M-number lists ({node_type}), {threads} thread(s)"),
             |b| b.iter(|| rerun(&mut e)),
         );
     }
@@ -147,7 +164,7 @@ fn chains(c: &mut Criterion) {
         let mut e = evaluator(&text, &registry, threads);
         e.evaluate();
         assert_eq!(e.messages().count(), 0);
-        c.bench_function(format!("evaluate 1000-node chain, {threads} thread(s)"), |b| {
+        c.bench_function(&format!("evaluate 1000-node chain, {threads} thread(s)"), |b| {
             b.iter(|| rerun(&mut e));
         });
     }

@@ -80,6 +80,9 @@ struct Segment {
 
 /// Runs a node on its collected input trees (one per input port, already modified and cast).
 pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> NodeOutput {
+    if let Some(out) = run_lifted(run, data, parallel) {
+        return out;
+    }
     let outputs = &run.node_type.outputs;
     let segments = if NodeType::solves_once(run.inputs) {
         vec![solve_once(run, data)]
@@ -124,6 +127,74 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
         }
     };
     stitch(run.node_id, outputs.len(), segments)
+}
+
+/// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
+/// ports and data fit the loop (see `lift`); `None` to take the general path.
+fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<NodeOutput> {
+    let lift = run.node_type.lift.as_ref()?;
+    let outputs = &run.node_type.outputs;
+    let fits = run.inputs.len() == lift.inputs.len()
+        && run
+            .inputs
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(p, &t)| p.access == Access::Item && !p.optional && p.data_type == t)
+        && outputs.len() == 1
+        && outputs[0].access == Access::Item
+        && outputs[0].data_type == lift.output
+        && run.matching != Matching::Cross
+        && !run.inputs.is_empty();
+    if !fits {
+        return None;
+    }
+    let iterations = branch_iterations(run, data);
+    // Every branch must hold its port's type (casting made it so; a generic column would not).
+    let typed = iterations.iter().all(|bi| {
+        bi.branches
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(b, &t)| b.is_none_or(|b| b.is_empty() || b.data_type() == t))
+    });
+    if !typed {
+        return None;
+    }
+    let total: usize = iterations.iter().map(|bi| bi.count).sum();
+    let parallel = parallel && total >= PARALLEL_THRESHOLD;
+    let one = |bi: &BranchIteration<'_>| {
+        let branches: Option<Vec<&Branch>> = bi
+            .branches
+            .iter()
+            .map(|b| b.filter(|b| !b.is_empty()))
+            .collect();
+        match branches {
+            // A required input with an empty branch: the output branch is empty (gap logic).
+            None => (Branch::new(lift.output), Vec::new()),
+            Some(_) if bi.count == 0 => (Branch::new(lift.output), Vec::new()),
+            Some(b) => (lift.run)(&b, bi.count, parallel && bi.count >= PARALLEL_THRESHOLD),
+        }
+    };
+    let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
+        iterations.par_iter().map(one).collect()
+    } else {
+        iterations.iter().map(one).collect()
+    };
+    let mut messages = Vec::new();
+    let mut pieces = Vec::with_capacity(iterations.len());
+    for (bi, (branch, errors)) in iterations.iter().zip(results) {
+        messages.extend(errors.into_iter().map(|(k, text)| Message {
+            node: run.node_id.clone(),
+            level: Level::Error,
+            path: Some(bi.target.clone()),
+            index: Some(k),
+            text,
+        }));
+        pieces.push((bi.target.clone(), branch));
+    }
+    Some(NodeOutput {
+        outputs: vec![DataTree::from_branches(pieces)],
+        messages,
+    })
 }
 
 fn stitch(node_id: &NodeId, n_outputs: usize, segments: Vec<Segment>) -> NodeOutput {

@@ -102,6 +102,7 @@ mod format;
 mod graph;
 mod host;
 mod iterate;
+mod lift;
 mod literal;
 mod literal_geometry;
 mod message;
