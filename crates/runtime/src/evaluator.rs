@@ -289,6 +289,11 @@ impl Evaluator {
             }
             for &i in &wave {
                 self.ensure_prepared(i);
+                // The old outputs are replaced below; dropping them first lets their memory be
+                // reused for the new ones (no node reads its own outputs).
+                for tree in &mut self.states[i].outputs {
+                    *tree = Arc::new(DataTree::new());
+                }
             }
             let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
                 wave.par_iter()

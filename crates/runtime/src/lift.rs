@@ -47,6 +47,71 @@ fn at(k: usize, len: usize) -> usize {
     k.min(len - 1)
 }
 
+/// Where the items of one input come from, iteration by iteration. Lifted loops are
+/// instantiated for each combination, so the common cases (a full branch, one repeated item)
+/// index without the longest-list clamp.
+trait Src<'a, T: 'a>: Copy + Send + Sync {
+    fn get(self, k: usize) -> &'a T;
+}
+
+/// A branch with one item per iteration.
+struct Full<'a, T>(&'a [T]);
+/// One item, used by every iteration.
+struct One<'a, T>(&'a T);
+/// A shorter branch whose last item repeats (longest list).
+struct Repeat<'a, T>(&'a [T]);
+
+macro_rules! src {
+    ($($name:ident),*) => {$(
+        impl<T> Clone for $name<'_, T> {
+            fn clone(&self) -> Self {
+                *self
+            }
+        }
+        impl<T> Copy for $name<'_, T> {}
+    )*};
+}
+src!(Full, One, Repeat);
+
+impl<'a, T: Sync> Src<'a, T> for Full<'a, T> {
+    #[inline(always)]
+    fn get(self, k: usize) -> &'a T {
+        &self.0[k]
+    }
+}
+
+impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
+    #[inline(always)]
+    fn get(self, _: usize) -> &'a T {
+        self.0
+    }
+}
+
+impl<'a, T: Sync> Src<'a, T> for Repeat<'a, T> {
+    #[inline(always)]
+    fn get(self, k: usize) -> &'a T {
+        &self.0[at(k, self.0.len())]
+    }
+}
+
+/// Calls `$body` with `$src` bound to the fastest source for the items `$items` over
+/// `$count` iterations.
+macro_rules! with_src {
+    ($items:expr, $count:expr, |$src:ident| $body:expr) => {{
+        let items = $items;
+        if items.len() == 1 {
+            let $src = One(&items[0]);
+            $body
+        } else if items.len() >= $count {
+            let $src = Full(&items[..$count]);
+            $body
+        } else {
+            let $src = Repeat(items);
+            $body
+        }
+    }};
+}
+
 /// Runs `f` for iterations `0..count`: a null where `is_null(k)`, and a null and an error
 /// where `f` fails.
 fn lift_loop<O: Item>(
@@ -149,13 +214,16 @@ impl NodeType {
             run: Arc::new(move |b, count, parallel| {
                 let a = items::<A>(b[0]);
                 let la = a.len();
-                lift_loop(
+                let g = &*g;
+                let nulls = move |k| b[0].is_null(at(k, la));
+                // `move` closures copy the sources, so the loop keeps them in registers.
+                with_src!(a, count, |s0| lift_loop(
                     count,
                     parallel,
                     b[0].has_nulls(),
-                    |k| b[0].is_null(at(k, la)),
-                    |k| g(&a[at(k, la)]),
-                )
+                    nulls,
+                    move |k| g(s0.get(k))
+                ))
             }),
         });
         node
@@ -194,13 +262,16 @@ impl NodeType {
             run: Arc::new(move |b, count, parallel| {
                 let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
                 let (l0, l1) = (a0.len(), a1.len());
-                lift_loop(
+                let g = &*g;
+                let any_nulls = b[0].has_nulls() || b[1].has_nulls();
+                let nulls = move |k| b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1));
+                with_src!(a0, count, |s0| with_src!(a1, count, |s1| lift_loop(
                     count,
                     parallel,
-                    b[0].has_nulls() || b[1].has_nulls(),
-                    |k| b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1)),
-                    |k| g(&a0[at(k, l0)], &a1[at(k, l1)]),
-                )
+                    any_nulls,
+                    nulls,
+                    move |k| g(s0.get(k), s1.get(k))
+                )))
             }),
         });
         node
@@ -225,14 +296,15 @@ impl NodeType {
             run: Arc::new(move |b, count, parallel| {
                 let (a0, a1, a2) = (items::<A>(b[0]), items::<B>(b[1]), items::<C>(b[2]));
                 let (l0, l1, l2) = (a0.len(), a1.len(), a2.len());
+                let g = &*g;
                 lift_loop(
                     count,
                     parallel,
                     b.iter().any(|b| b.has_nulls()),
-                    |k| {
+                    move |k| {
                         b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1)) || b[2].is_null(at(k, l2))
                     },
-                    |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
+                    move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
                 )
             }),
         });
