@@ -92,6 +92,8 @@ pub struct Evaluator {
     depth: Vec<usize>,
     threads: Threads,
     last_run: Vec<usize>,
+    /// For each node, its input ports (as the solve function sees them).
+    ports: Vec<Vec<crate::Port>>,
 }
 
 impl Evaluator {
@@ -135,7 +137,13 @@ impl Evaluator {
             })
             .collect();
         let overrides = vec![None; plan.inputs.len()];
+        let ports = plan
+            .nodes
+            .iter()
+            .map(|node| node.inputs.iter().map(|input| input.port.clone()).collect())
+            .collect();
         Self {
+            ports,
             plan,
             states,
             overrides,
@@ -275,15 +283,14 @@ impl Evaluator {
             .copied()
             .filter(|&i| self.states[i].dirty)
             .collect();
-        self.last_run = dirty.clone();
         // Group by depth: nodes of one depth never feed each other.
         let max_depth = dirty.iter().map(|&i| self.depth[i]).max().unwrap_or(0);
-        for d in 0..=max_depth {
-            let wave: Vec<usize> = dirty
-                .iter()
-                .copied()
-                .filter(|&i| self.depth[i] == d)
-                .collect();
+        let mut waves: Vec<Vec<usize>> = vec![Vec::new(); max_depth + 1];
+        for &i in &dirty {
+            waves[self.depth[i]].push(i);
+        }
+        self.last_run = dirty;
+        for wave in waves {
             if wave.is_empty() {
                 continue;
             }
@@ -319,10 +326,9 @@ impl Evaluator {
         let Some(prepare) = &node.node_type.prepare else {
             return;
         };
-        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
         let config = crate::NodeConfig {
             settings: &node.settings,
-            inputs: &ports,
+            inputs: &self.ports[i],
         };
         let result = catch_unwind(AssertUnwindSafe(|| prepare(&config))).unwrap_or_else(|_| {
             Err(NodeError(
@@ -383,11 +389,10 @@ impl Evaluator {
             }
             return out;
         }
-        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
         let run = NodeRun {
             node_id: &node.id,
             node_type: &node.node_type,
-            inputs: &ports,
+            inputs: &self.ports[i],
             settings: &node.settings,
             matching: node.matching,
             principal: node.principal_input(),
