@@ -90,9 +90,16 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
         let iterations = branch_iterations(run, data);
         let has_item = run.inputs.iter().any(|p| p.access == Access::Item);
         let mut tasks = Vec::new();
-        let mut total = 0;
+        let total: usize = iterations.iter().map(|bi| bi.count).sum();
+        let parallel = parallel && total >= PARALLEL_THRESHOLD;
+        // Chunks are only for spreading work over threads: on one thread each branch pairing
+        // is one task, so its output branch is built in place and never stitched.
+        let chunk = if parallel {
+            CHUNK_ITERATIONS
+        } else {
+            usize::MAX
+        };
         for (j, bi) in iterations.iter().enumerate() {
-            total += bi.count;
             if bi.count == 0 {
                 tasks.push(Task {
                     branch_iteration: j,
@@ -102,7 +109,7 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
             }
             let mut start = 0;
             while start < bi.count {
-                let end = (start + CHUNK_ITERATIONS).min(bi.count);
+                let end = start.saturating_add(chunk).min(bi.count);
                 tasks.push(Task {
                     branch_iteration: j,
                     start,
@@ -120,7 +127,7 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
                 has_item,
             )
         };
-        if parallel && total >= PARALLEL_THRESHOLD {
+        if parallel {
             tasks.par_iter().map(run_one).collect()
         } else {
             tasks.iter().map(run_one).collect()
@@ -376,8 +383,9 @@ fn run_task(
     let mut sinks = new_sinks(&run.node_type.outputs);
     for sink in &mut sinks {
         if sink.access == Access::Item {
+            let column = crate::Column::with_capacity(sink.data_type, task.end - task.start);
             sink.pieces
-                .push((bi.target.clone(), Branch::new(sink.data_type)));
+                .push((bi.target.clone(), Branch::from_column(column)));
         }
     }
     let mut cursors: Vec<Cursor<'_>> = ports
