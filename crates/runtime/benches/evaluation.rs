@@ -140,7 +140,11 @@ fn lifting(c: &mut Criterion) {
             moved
         });
     });
-    for (node_type, threads) in [("bench.move", 1), ("bench.move", 2), ("bench.move_solve", 1)] {
+    for (node_type, threads) in [
+        ("bench.move", 1),
+        ("bench.move", 2),
+        ("bench.move_solve", 1),
+    ] {
         let mut e = evaluator(&move_graph(node_type), &registry, threads);
         e.set_input("points", DataTree::from_list(pts.clone()))
             .unwrap();
@@ -190,9 +194,12 @@ fn lifting(c: &mut Criterion) {
     });
     for threads in [1, 2] {
         let mut e = rotate_evaluator(&registry, &pts, &angles, threads);
-        g.bench_function(format!("graph: rotate 1M points, {threads} thread(s)"), |b| {
-            b.iter(|| rerun(&mut e));
-        });
+        g.bench_function(
+            format!("graph: rotate 1M points, {threads} thread(s)"),
+            |b| {
+                b.iter(|| rerun(&mut e));
+            },
+        );
     }
     g.finish();
 }
@@ -254,8 +261,10 @@ fn threads_cpu_time(_: &mut Criterion) {
         println!(
             "two threads: {:.2}x faster (wall); CPU time {}",
             w1 / w2,
-            c1.zip(c2)
-                .map_or("unknown".to_owned(), |(a, b)| format!("{:.2}x of one thread's", b / a))
+            c1.zip(c2).map_or("unknown".to_owned(), |(a, b)| format!(
+                "{:.2}x of one thread's",
+                b / a
+            ))
         );
     }
 }
@@ -267,9 +276,12 @@ fn chains(c: &mut Criterion) {
         let mut e = evaluator(&text, &registry, threads);
         e.evaluate();
         assert_eq!(e.messages().count(), 0);
-        c.bench_function(&format!("evaluate 1000-node chain, {threads} thread(s)"), |b| {
-            b.iter(|| rerun(&mut e));
-        });
+        c.bench_function(
+            &format!("evaluate 1000-node chain, {threads} thread(s)"),
+            |b| {
+                b.iter(|| rerun(&mut e));
+            },
+        );
     }
 }
 

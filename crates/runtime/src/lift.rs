@@ -22,6 +22,10 @@ const LIFT_CHUNK: usize = 16_384;
 /// The output branch of a lifted loop, and the failed items as (index, message).
 pub(crate) type LiftOutput = (Branch, Vec<(usize, String)>);
 
+/// The loop of a lifted function over one branch pairing: the input branches (each non-empty
+/// and of the declared type), the number of iterations, and whether to use threads.
+pub(crate) type LiftLoop = Arc<dyn Fn(&[&Branch], usize, bool) -> LiftOutput + Send + Sync>;
+
 /// A lifted item function: its input and output types, and the loop over one branch pairing.
 #[derive(Clone)]
 pub(crate) struct Lift {
@@ -29,7 +33,7 @@ pub(crate) struct Lift {
     pub(crate) output: DataType,
     /// Runs the function over `count` iterations of the given input branches (each non-empty
     /// and of the declared type), in parallel when asked.
-    pub(crate) run: Arc<dyn Fn(&[&Branch], usize, bool) -> LiftOutput + Send + Sync>,
+    pub(crate) run: LiftLoop,
 }
 
 impl std::fmt::Debug for Lift {
@@ -302,7 +306,9 @@ impl NodeType {
                     parallel,
                     b.iter().any(|b| b.has_nulls()),
                     move |k| {
-                        b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1)) || b[2].is_null(at(k, l2))
+                        b[0].is_null(at(k, l0))
+                            || b[1].is_null(at(k, l1))
+                            || b[2].is_null(at(k, l2))
                     },
                     move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
                 )

@@ -443,7 +443,10 @@ fn tuple_of<const N: usize, T: Copy + Default>(
 }
 
 /// Reads `(a, b, …)` of `N` numbers; a non-number names the enclosing type.
-pub(crate) fn numbers<const N: usize>(node: &Node, data_type: DataType) -> Result<[f64; N], LiteralError> {
+pub(crate) fn numbers<const N: usize>(
+    node: &Node,
+    data_type: DataType,
+) -> Result<[f64; N], LiteralError> {
     tuple_of::<N, f64>(node, data_type, |item| match &item.kind {
         Kind::Number(_) => number(item, data_type),
         _ => error(

@@ -22,7 +22,9 @@ use locus_kernel::{
     OrientedBox, Point3, Polyline,
 };
 
-use crate::literal::{error, mismatch, number, numbers, plane, plane_node, number_node, numbers_node};
+use crate::literal::{
+    error, mismatch, number, number_node, numbers, numbers_node, plane, plane_node,
+};
 use crate::syntax::{Field, Kind, Node};
 use crate::{DataType, LiteralError, Shared, Value};
 
@@ -74,17 +76,15 @@ impl<'a> Fields<'a> {
 
     fn get(&self, name: &str) -> Option<&'a Node> {
         debug_assert!(self.allowed.contains(&name));
-        self.fields.iter().find(|f| f.name == name).map(|f| &f.value)
+        self.fields
+            .iter()
+            .find(|f| f.name == name)
+            .map(|f| &f.value)
     }
 
     fn need(&self, name: &str) -> Result<&'a Node, LiteralError> {
         self.get(name).map_or_else(
-            || {
-                error(
-                    self.node,
-                    format!("{} needs the field `{name}`", self.what),
-                )
-            },
+            || error(self.node, format!("{} needs the field `{name}`", self.what)),
             Ok,
         )
     }
@@ -132,11 +132,16 @@ fn reals(node: &Node, what: &str, data_type: DataType) -> Result<Vec<f64>, Liter
 
 fn count(node: &Node, what: &str) -> Result<usize, LiteralError> {
     match &node.kind {
-        Kind::Number(n) => n
-            .replace('_', "")
-            .parse::<usize>()
-            .or_else(|_| error(node, format!("expected a whole {what} of at least 0, found {n}"))),
-        _ => error(node, format!("expected a whole {what}, found {}", node.describe())),
+        Kind::Number(n) => n.replace('_', "").parse::<usize>().or_else(|_| {
+            error(
+                node,
+                format!("expected a whole {what} of at least 0, found {n}"),
+            )
+        }),
+        _ => error(
+            node,
+            format!("expected a whole {what}, found {}", node.describe()),
+        ),
     }
 }
 
@@ -196,7 +201,11 @@ pub(crate) fn curve(node: &Node) -> Result<Curve, LiteralError> {
     let t = DataType::Curve;
     let f = Fields::of(node, t, "a curve", CURVE_FIELDS)?;
     let shapes = ["degree", "line", "polyline", "circle", "arc"];
-    let given: Vec<&str> = shapes.iter().copied().filter(|s| f.get(s).is_some()).collect();
+    let given: Vec<&str> = shapes
+        .iter()
+        .copied()
+        .filter(|s| f.get(s).is_some())
+        .collect();
     let [shape] = given.as_slice() else {
         return error(
             node,
@@ -397,9 +406,9 @@ pub(crate) fn struct_type(node: &Node) -> Option<DataType> {
         return None;
     };
     let has = |name: &str| fields.iter().any(|f| f.name == name);
-    let degree_pair = fields
-        .iter()
-        .any(|f| f.name == "degree" && matches!(&f.value.kind, Kind::Tuple(None, v) if v.len() == 2));
+    let degree_pair = fields.iter().any(|f| {
+        f.name == "degree" && matches!(&f.value.kind, Kind::Tuple(None, v) if v.len() == 2)
+    });
     Some(if has("knots_u") || has("knots_v") || degree_pair {
         DataType::Surface
     } else if ["degree", "line", "polyline", "circle", "arc"]
@@ -419,7 +428,10 @@ pub(crate) fn struct_type(node: &Node) -> Option<DataType> {
 }
 
 /// Reads a geometry item of `data_type`, or `None` if the type is not a geometry form here.
-pub(crate) fn parse_geometry(node: &Node, data_type: DataType) -> Option<Result<Value, LiteralError>> {
+pub(crate) fn parse_geometry(
+    node: &Node,
+    data_type: DataType,
+) -> Option<Result<Value, LiteralError>> {
     Some(match data_type {
         DataType::Line => line(node).map(Value::Line),
         DataType::Box => oriented_box(node).map(Value::Box),
@@ -457,7 +469,10 @@ fn reals_node(values: &[f64]) -> Node {
 }
 
 fn line_node(l: &Line) -> Node {
-    Node::new(Kind::Tuple(None, vec![point_node(l.from), point_node(l.to)]))
+    Node::new(Kind::Tuple(
+        None,
+        vec![point_node(l.from), point_node(l.to)],
+    ))
 }
 
 fn circle_node(c: &Circle) -> Node {
@@ -494,7 +509,9 @@ fn curve_node(c: &Curve) -> Node {
             points_node(polyline.points()),
             Curve::from(polyline.clone()).domain(),
         ),
-        Curve::Circle { circle, .. } => ("circle", circle_node(circle), Curve::from(*circle).domain()),
+        Curve::Circle { circle, .. } => {
+            ("circle", circle_node(circle), Curve::from(*circle).domain())
+        }
         Curve::Arc { arc, .. } => ("arc", arc_node(arc), Curve::from(*arc).domain()),
     };
     let mut fields = vec![field(name, shape)];
@@ -518,13 +535,17 @@ fn surface_node(s: &NurbsSurface) -> Node {
         field("degree", degree),
         field(
             "points",
-            Node::new(Kind::List(rows(nu).map(|r| points_node(&s.points()[r])).collect())),
+            Node::new(Kind::List(
+                rows(nu).map(|r| points_node(&s.points()[r])).collect(),
+            )),
         ),
     ];
     if s.weights().iter().any(|&w| w != 1.0) {
         fields.push(field(
             "weights",
-            Node::new(Kind::List(rows(nu).map(|r| reals_node(&s.weights()[r])).collect())),
+            Node::new(Kind::List(
+                rows(nu).map(|r| reals_node(&s.weights()[r])).collect(),
+            )),
         ));
     }
     fields.push(field("knots_u", reals_node(s.knots_u())));

@@ -17,7 +17,10 @@ pub struct TreePath(Repr);
 /// The storage of a path: a small inline array, or a boxed slice for deep paths.
 #[derive(Clone)]
 enum Repr {
-    Inline { len: u8, items: [u32; TreePath::INLINE] },
+    Inline {
+        len: u8,
+        items: [u32; TreePath::INLINE],
+    },
     Heap(Box<[u32]>),
 }
 
@@ -262,7 +265,10 @@ mod tests {
         }
         assert_eq!(q, p);
         assert_eq!(q.with_last_offset(2).last(), 10);
-        assert_eq!(TreePath::from(&long[..5]), TreePath::new(long[..5].to_vec()));
+        assert_eq!(
+            TreePath::from(&long[..5]),
+            TreePath::new(long[..5].to_vec())
+        );
         assert!(TreePath::from(&long[..5]) < p);
         assert!(TreePath::from([0, 2]) > p);
         let hash = |p: &TreePath| {

@@ -114,7 +114,10 @@ fn one_and_lift3_lift_too() {
         .input(DataTree::from_list(vec![1i64, i64::MIN, -3]))
         .run();
     assert_eq!(r.outputs[0].to_text(), "{0}:[-1, null, 3]");
-    assert_eq!(r.messages[0].to_string(), "error: node \"t.neg\" at {0}[1]: overflow");
+    assert_eq!(
+        r.messages[0].to_string(),
+        "error: node \"t.neg\" at {0}[1]: overflow"
+    );
     let mul_add = NodeType::new("t.fma", "Fma", "Fma", "Test")
         .input(Port::new("a", "a", DataType::Number))
         .input(Port::new("b", "b", DataType::Number))

@@ -80,8 +80,14 @@ fn tags_of_another_type_cast_as_a_wire_would() {
         read("Vector(1, 2, 3)", DataType::Point),
         DataTree::from_item(Point3::new(1.0, 2.0, 3.0))
     );
-    assert_eq!(read("Number(2.6)", DataType::Integer), DataTree::from_item(3i64));
-    assert_eq!(read("Integer(2)", DataType::Text), DataTree::from_item("2".to_owned()));
+    assert_eq!(
+        read("Number(2.6)", DataType::Integer),
+        DataTree::from_item(3i64)
+    );
+    assert_eq!(
+        read("Integer(2)", DataType::Text),
+        DataTree::from_item("2".to_owned())
+    );
 }
 
 #[test]

@@ -5,10 +5,12 @@
 mod common;
 
 use locus_kernel::{
-    Arc, Brep, Circle, Curve, Interval, Line, NurbsCurve, NurbsSurface, OrientedBox, Plane,
-    Point3, Polyline, Vector3,
+    Arc, Brep, Circle, Curve, Interval, Line, NurbsCurve, NurbsSurface, OrientedBox, Plane, Point3,
+    Polyline, Vector3,
 };
-use locus_runtime::{DataTree, DataType, Document, Literal, Shared, Value, check_text, parse_literal};
+use locus_runtime::{
+    DataTree, DataType, Document, Literal, Shared, Value, check_text, parse_literal,
+};
 
 fn read(text: &str, t: DataType) -> Value {
     let tree = parse_literal(text, t).unwrap_or_else(|e| panic!("{text}: {e}"));
@@ -45,9 +47,19 @@ fn p(x: f64, y: f64, z: f64) -> Point3 {
 #[test]
 fn lines() {
     let l = Line::new(p(0.0, 0.0, 0.0), p(1.0, 2.0, 3.0));
-    round_trip("((0.0, 0.0, 0.0), (1.0, 2.0, 3.0))", DataType::Line, &Value::Line(l));
-    assert_eq!(read("((0, 0, 0), (1, 2, 3))", DataType::Line), Value::Line(l));
-    assert_eq!(read("((0, 0, 0), (1, 2, 3))", DataType::Generic), Value::Line(l));
+    round_trip(
+        "((0.0, 0.0, 0.0), (1.0, 2.0, 3.0))",
+        DataType::Line,
+        &Value::Line(l),
+    );
+    assert_eq!(
+        read("((0, 0, 0), (1, 2, 3))", DataType::Line),
+        Value::Line(l)
+    );
+    assert_eq!(
+        read("((0, 0, 0), (1, 2, 3))", DataType::Generic),
+        Value::Line(l)
+    );
     assert_eq!(
         fails("((0, 0, 0), (1, 2))", DataType::Line).0,
         "expected a point (x, y, z), found a tuple of 2 items"
@@ -69,11 +81,21 @@ fn boxes() {
     let (m, at) = fails("(plane: XY, x: (0, 1), y: (0, 1))", DataType::Box);
     assert_eq!(m, "a box needs the field `z`");
     assert_eq!(at, "(plane: XY, ");
-    let (m, at) = fails("(plane: XY, x: (0, 1), y: (0, 1), z: (0, 1), w: 2)", DataType::Box);
-    assert_eq!(m, "unknown field `w` of a box (its fields are: plane, x, y, z)");
+    let (m, at) = fails(
+        "(plane: XY, x: (0, 1), y: (0, 1), z: (0, 1), w: 2)",
+        DataType::Box,
+    );
+    assert_eq!(
+        m,
+        "unknown field `w` of a box (its fields are: plane, x, y, z)"
+    );
     assert_eq!(at, "w: 2)");
     assert_eq!(
-        fails("(plane: XY, x: (0, 1), x: (0, 1), y: (0, 1), z: (0, 1))", DataType::Box).0,
+        fails(
+            "(plane: XY, x: (0, 1), x: (0, 1), y: (0, 1), z: (0, 1))",
+            DataType::Box
+        )
+        .0,
         "field `x` of a box is given twice"
     );
 }
@@ -120,8 +142,15 @@ fn fails_reason_collinear() -> String {
 #[test]
 fn circles_and_arcs() {
     let c = Circle::new(Plane::WORLD_XY, 2.0).unwrap();
-    round_trip("(plane: XY, radius: 2.0)", DataType::Circle, &Value::Circle(c));
-    assert_eq!(read("(plane: XY, radius: 2)", DataType::Generic), Value::Circle(c));
+    round_trip(
+        "(plane: XY, radius: 2.0)",
+        DataType::Circle,
+        &Value::Circle(c),
+    );
+    assert_eq!(
+        read("(plane: XY, radius: 2)", DataType::Generic),
+        Value::Circle(c)
+    );
     let (m, at) = fails("(plane: XY, radius: 0)", DataType::Circle);
     assert_eq!(m, "invalid circle: circle radius 0 is not positive");
     assert_eq!(at, "0)");
@@ -136,7 +165,10 @@ fn circles_and_arcs() {
         Value::Arc(a)
     );
     let (m, at) = fails("(plane: XY, radius: 2, angle: (1, 0))", DataType::Arc);
-    assert_eq!(m, "invalid arc: arc angle 1 to 0 must increase by at most 2π");
+    assert_eq!(
+        m,
+        "invalid arc: arc angle 1 to 0 must increase by at most 2π"
+    );
     assert_eq!(at, "(1, 0))");
 }
 
@@ -146,7 +178,12 @@ fn curve(c: impl Into<Curve>) -> Value {
 
 #[test]
 fn nurbs_curves() {
-    let pts = vec![p(0.0, 0.0, 0.0), p(1.0, 1.0, 0.0), p(2.0, 0.0, 0.0), p(3.0, 1.0, 0.0)];
+    let pts = vec![
+        p(0.0, 0.0, 0.0),
+        p(1.0, 1.0, 0.0),
+        p(2.0, 0.0, 0.0),
+        p(3.0, 1.0, 0.0),
+    ];
     let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
     let c = NurbsCurve::new_non_rational(3, pts.clone(), knots.clone()).unwrap();
     let text = "(degree: 3, points: [(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (2.0, 0.0, 0.0), \
@@ -164,9 +201,14 @@ fn nurbs_curves() {
         read(&format!("(degree: 3, points: {points})"), DataType::Curve),
         curve(NurbsCurve::create(&pts, 3, false).unwrap())
     );
-    let periodic = read(&format!("(degree: 3, points: {points}, periodic: true)"), DataType::Curve);
+    let periodic = read(
+        &format!("(degree: 3, points: {points}, periodic: true)"),
+        DataType::Curve,
+    );
     assert_eq!(periodic, curve(NurbsCurve::create(&pts, 3, true).unwrap()));
-    let Value::Curve(pc) = &periodic else { unreachable!() };
+    let Value::Curve(pc) = &periodic else {
+        unreachable!()
+    };
     assert!(pc.is_periodic());
     // …and its exact form reads back to the same periodic curve.
     assert_eq!(read(&write(&periodic), DataType::Curve), periodic);
@@ -182,13 +224,9 @@ fn bad_nurbs_curves_name_the_kernels_reason_at_the_field() {
     assert_eq!(
         m,
         "invalid curve: ".to_owned()
-            + &NurbsCurve::new_non_rational(
-                3,
-                vec![Point3::ORIGIN; 4],
-                vec![0.0, 0.0, 1.0, 1.0]
-            )
-            .unwrap_err()
-            .to_string()
+            + &NurbsCurve::new_non_rational(3, vec![Point3::ORIGIN; 4], vec![0.0, 0.0, 1.0, 1.0])
+                .unwrap_err()
+                .to_string()
     );
     assert!(m.contains("knot"), "{m}");
     assert_eq!(at, "[0, 0, 1, 1]");
@@ -203,16 +241,25 @@ fn bad_nurbs_curves_name_the_kernels_reason_at_the_field() {
         DataType::Curve,
     );
     assert_eq!(m, "invalid curve: 2 weights for 4 control points");
-    let (m, at) = fails(&format!("(degree: 0, points: {points}, knots: [0, 1, 2])"), DataType::Curve);
+    let (m, at) = fails(
+        &format!("(degree: 0, points: {points}, knots: [0, 1, 2])"),
+        DataType::Curve,
+    );
     assert!(m.starts_with("invalid curve: invalid degree 0"), "{m}");
     assert_eq!(at, "0, points: [");
-    let (m, _) = fails(&format!("(degree: 3, points: {points}, weights: [1, 1, 1, 1])"), DataType::Curve);
+    let (m, _) = fails(
+        &format!("(degree: 3, points: {points}, weights: [1, 1, 1, 1])"),
+        DataType::Curve,
+    );
     assert!(m.starts_with("weights need knots"), "{m}");
     let (m, _) = fails(
         &format!("(degree: 3, points: {points}, knots: [0, 0, 0, 1, 1, 1], periodic: true)"),
         DataType::Curve,
     );
-    assert!(m.starts_with("periodic is for curves given without knots"), "{m}");
+    assert!(
+        m.starts_with("periodic is for curves given without knots"),
+        "{m}"
+    );
     let (m, _) = fails("(degree: 2, points: [(0, 0, 0)])", DataType::Curve);
     assert!(m.starts_with("invalid curve: "), "{m}");
     assert_eq!(
@@ -247,7 +294,11 @@ fn lines_polylines_circles_and_arcs_as_curves() {
         &curve(pl),
     );
     let c = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
-    round_trip("(circle: (plane: XY, radius: 1.0))", DataType::Curve, &curve(c));
+    round_trip(
+        "(circle: (plane: XY, radius: 1.0))",
+        DataType::Curve,
+        &curve(c),
+    );
     let a = Arc::new(c, Interval::new(0.0, 1.0)).unwrap();
     round_trip(
         "(arc: (plane: XY, radius: 1.0, angle: (0.0, 1.0)))",
@@ -255,12 +306,24 @@ fn lines_polylines_circles_and_arcs_as_curves() {
         &curve(a),
     );
     // A line, circle or arc literal tagged with its type is cast to a curve, as a wire would.
-    assert_eq!(read("Line((0, 0, 0), (3, 4, 0))", DataType::Curve), curve(l));
-    assert_eq!(read("Circle(plane: XY, radius: 1)", DataType::Curve), curve(c));
+    assert_eq!(
+        read("Line((0, 0, 0), (3, 4, 0))", DataType::Curve),
+        curve(l)
+    );
+    assert_eq!(
+        read("Circle(plane: XY, radius: 1)", DataType::Curve),
+        curve(c)
+    );
     let (m, at) = fails("(polyline: [(0, 0, 0)])", DataType::Curve);
-    assert_eq!(m, "invalid polyline: a polyline needs at least 2 points, got 1");
+    assert_eq!(
+        m,
+        "invalid polyline: a polyline needs at least 2 points, got 1"
+    );
     assert_eq!(at, "[(0, 0, 0)])");
-    let (m, at) = fails("(line: ((0, 0, 0), (1, 0, 0)), domain: (1, 1))", DataType::Curve);
+    let (m, at) = fails(
+        "(line: ((0, 0, 0), (1, 0, 0)), domain: (1, 1))",
+        DataType::Curve,
+    );
     assert_eq!(m, "invalid curve domain: domain 1 to 1 is not increasing");
     assert_eq!(at, "(1, 1))");
 }
@@ -285,8 +348,15 @@ const BILINEAR: &str = "(degree: (1, 1), points: [[(0.0, 0.0, 0.0), (0.0, 1.0, 0
 #[test]
 fn surfaces() {
     let s = bilinear();
-    round_trip(BILINEAR, DataType::Surface, &Value::Surface(Shared::new(s.clone())));
-    assert_eq!(read(BILINEAR, DataType::Generic), Value::Surface(Shared::new(s)));
+    round_trip(
+        BILINEAR,
+        DataType::Surface,
+        &Value::Surface(Shared::new(s.clone())),
+    );
+    assert_eq!(
+        read(BILINEAR, DataType::Generic),
+        Value::Surface(Shared::new(s))
+    );
     let rational = NurbsSurface::new(
         1,
         1,
@@ -305,35 +375,59 @@ fn surfaces() {
         DataType::Surface,
         &Value::Surface(Shared::new(rational)),
     );
-    let (m, at) = fails(&BILINEAR.replace("knots_v: [0.0, 1.0]", "knots_v: [0.0]"), DataType::Surface);
+    let (m, at) = fails(
+        &BILINEAR.replace("knots_v: [0.0, 1.0]", "knots_v: [0.0]"),
+        DataType::Surface,
+    );
     assert_eq!(
         m,
         "invalid surface: invalid knot vector: v needs 2 knots for 2 control points of degree 1, got 1"
     );
     assert_eq!(at, "[0.0])");
-    let (m, at) = fails(&BILINEAR.replace("knots_u: [0.0, 1.0]", "knots_u: [1.0, 0.0]"), DataType::Surface);
-    assert!(m.starts_with("invalid surface: invalid knot vector: u"), "{m}");
+    let (m, at) = fails(
+        &BILINEAR.replace("knots_u: [0.0, 1.0]", "knots_u: [1.0, 0.0]"),
+        DataType::Surface,
+    );
+    assert!(
+        m.starts_with("invalid surface: invalid knot vector: u"),
+        "{m}"
+    );
     assert_eq!(at, "[1.0, 0.0], ");
     let (m, _) = fails(
         &BILINEAR.replace("[(1.0, 0.0, 0.0), (1.0, 1.0, 1.0)]", "[(1.0, 0.0, 0.0)]"),
         DataType::Surface,
     );
-    assert_eq!(m, "invalid surface: control point grid rows have different lengths");
+    assert_eq!(
+        m,
+        "invalid surface: control point grid rows have different lengths"
+    );
     let (m, at) = fails(
         &BILINEAR.replace("], knots_u", "], weights: [[1, 1]], knots_u"),
         DataType::Surface,
     );
-    assert_eq!(m, "invalid surface: weights grid must be 2 by 2 like the control points");
+    assert_eq!(
+        m,
+        "invalid surface: weights grid must be 2 by 2 like the control points"
+    );
     assert_eq!(at, "[[1, 1]], kn");
     assert_eq!(
-        fails("(degree: 3, points: [[]], knots_u: [], knots_v: [])", DataType::Surface).0,
+        fails(
+            "(degree: 3, points: [[]], knots_u: [], knots_v: [])",
+            DataType::Surface
+        )
+        .0,
         "expected the degrees (u, v) of the surface, found 3"
     );
 }
 
 #[test]
 fn breps_from_boxes_and_surfaces() {
-    let b = OrientedBox::new(Plane::WORLD_XY, Interval::UNIT, Interval::UNIT, Interval::UNIT);
+    let b = OrientedBox::new(
+        Plane::WORLD_XY,
+        Interval::UNIT,
+        Interval::UNIT,
+        Interval::UNIT,
+    );
     let text = "(plane: XY, x: (0, 1), y: (0, 1), z: (0, 1))";
     let brep = Value::Brep(Shared::new(Brep::from_box(&b).unwrap()));
     assert_eq!(read(text, DataType::Brep), brep);
@@ -365,7 +459,12 @@ fn generic_trees_of_geometry_round_trip() {
         Value::Line(Line::new(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0))),
         Value::Circle(c),
         Value::Arc(Arc::new(c, Interval::UNIT).unwrap()),
-        Value::Box(OrientedBox::new(Plane::WORLD_YZ, Interval::UNIT, Interval::UNIT, Interval::UNIT)),
+        Value::Box(OrientedBox::new(
+            Plane::WORLD_YZ,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::UNIT,
+        )),
         curve(Line::new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 2.0))),
         Value::Surface(Shared::new(bilinear())),
     ];
@@ -383,7 +482,10 @@ fn bad_geometry_values_in_graph_files_are_located_and_named() {
 ])"#;
     let errors: Vec<String> = match check_text(text, &common::registry()) {
         Ok(_) => panic!("checking passed"),
-        Err(d) => d.iter().map(|d| d.display_in("g.ron").to_string()).collect(),
+        Err(d) => d
+            .iter()
+            .map(|d| d.display_in("g.ron").to_string())
+            .collect(),
     };
     assert_eq!(
         errors,
