@@ -539,3 +539,54 @@ fn graph_files_with_geometry_values_round_trip_byte_for_byte() {
     let checked = doc.check(&common::registry()).unwrap();
     assert!(checked.warnings.is_empty());
 }
+
+proptest::proptest! {
+    /// Truncated and spliced geometry literals never panic: they read or give an error.
+    #[test]
+    fn broken_geometry_literals_never_panic(cut in 0usize..400, splice in 0usize..400, t in 0usize..16) {
+        let samples = [
+            BILINEAR,
+            "(degree: 3, points: [(0, 0, 0), (1, 1, 0), (2, 0, 0), (3, 1, 0)], periodic: true)",
+            "(arc: (plane: XY, radius: 2, angle: (0, 1)), domain: (0, 5))",
+            "Box(plane: ((0, 0, 0), (1, 0, 0), (0, 1, 0)), x: (0, 1), y: (0, 1), z: (0, 1))",
+            "[((0, 0, 0), (1, 0, 0)), (plane: XZ, radius: 1), (polyline: [(0, 0, 0), (1, 1, 1)])]",
+        ];
+        let types = DataType::ALL;
+        let ty = types[t % types.len()];
+        for s in samples {
+            let a = &s[..cut.min(s.len())];
+            let b = &s[splice.min(s.len())..];
+            let _ = parse_literal(a, ty);
+            let _ = parse_literal(&format!("{a}{b}"), ty);
+            let _ = parse_literal(s, ty);
+        }
+    }
+}
+
+#[test]
+fn huge_degrees_and_empty_lists_are_errors_not_panics() {
+    let points = "[(0, 0, 0), (1, 1, 0), (2, 0, 0), (3, 1, 0)]";
+    for degree in ["18446744073709551615", "4294967296", "0"] {
+        for rest in ["", ", periodic: true", ", knots: [0, 0, 0, 1, 1, 1]"] {
+            let text = format!("(degree: {degree}, points: {points}{rest})");
+            assert!(parse_literal(&text, DataType::Curve).is_err(), "{text}");
+        }
+        let text = BILINEAR.replace("degree: (1, 1)", &format!("degree: ({degree}, 1)"));
+        assert!(parse_literal(&text, DataType::Surface).is_err(), "{text}");
+    }
+    for text in [
+        "(degree: 3, points: [])",
+        "(degree: 3, points: [], knots: [])",
+        "(degree: 2, points: [(0, 0, 0), (1, 0, 0)], periodic: true)",
+        "(polyline: [])",
+    ] {
+        assert!(parse_literal(text, DataType::Curve).is_err(), "{text}");
+    }
+    assert!(
+        parse_literal(
+            "(degree: (1, 1), points: [], knots_u: [], knots_v: [])",
+            DataType::Surface
+        )
+        .is_err()
+    );
+}
