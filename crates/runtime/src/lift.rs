@@ -55,7 +55,10 @@ fn at(k: usize, len: usize) -> usize {
 /// instantiated for each combination, so the common cases (a full branch, one repeated item)
 /// index without the longest-list clamp.
 trait Src<'a, T: 'a>: Copy + Send + Sync {
+    /// The item of iteration `k`.
     fn get(self, k: usize) -> &'a T;
+    /// The items of iterations `0..count`, in order.
+    fn iter(self, count: usize) -> impl Iterator<Item = &'a T>;
 }
 
 /// A branch with one item per iteration.
@@ -82,6 +85,9 @@ impl<'a, T: Sync> Src<'a, T> for Full<'a, T> {
     fn get(self, k: usize) -> &'a T {
         &self.0[k]
     }
+    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
+        self.0[..count].iter()
+    }
 }
 
 impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
@@ -89,12 +95,21 @@ impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
     fn get(self, _: usize) -> &'a T {
         self.0
     }
+    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
+        std::iter::repeat_n(self.0, count)
+    }
 }
 
 impl<'a, T: Sync> Src<'a, T> for Repeat<'a, T> {
     #[inline(always)]
     fn get(self, k: usize) -> &'a T {
         &self.0[at(k, self.0.len())]
+    }
+    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
+        let last = &self.0[self.0.len() - 1];
+        self.0
+            .iter()
+            .chain(std::iter::repeat_n(last, count.saturating_sub(self.0.len())))
     }
 }
 
@@ -117,13 +132,15 @@ macro_rules! with_src {
 }
 
 /// Runs `f` for iterations `0..count`: a null where `is_null(k)`, and a null and an error
-/// where `f` fails.
-fn lift_loop<O: Item>(
+/// where `f` fails. `results` gives the same results as `f` in order, as an iterator (the
+/// serial loop without nulls uses it: slice iterators compile to the tightest loop).
+fn lift_loop<O: Item, I: Iterator<Item = Result<O, NodeError>>>(
     count: usize,
     parallel: bool,
     any_nulls: bool,
     is_null: impl Fn(usize) -> bool + Sync,
     f: impl Fn(usize) -> Result<O, NodeError> + Sync,
+    results: impl FnOnce() -> I,
 ) -> LiftOutput {
     let mut errors: Vec<(usize, String)> = Vec::new();
     let items: Vec<O> = if parallel {
@@ -162,9 +179,10 @@ fn lift_loop<O: Item>(
             })
             .collect()
     } else {
-        (0..count)
-            .map(|k| {
-                f(k).unwrap_or_else(|e| {
+        results()
+            .enumerate()
+            .map(|(k, r)| {
+                r.unwrap_or_else(|e| {
                     errors.push((k, e.0));
                     O::placeholder()
                 })
@@ -226,7 +244,8 @@ impl NodeType {
                     parallel,
                     b[0].has_nulls(),
                     nulls,
-                    move |k| g(s0.get(k))
+                    move |k| g(s0.get(k)),
+                    move || s0.iter(count).map(g)
                 ))
             }),
         });
@@ -274,7 +293,8 @@ impl NodeType {
                     parallel,
                     any_nulls,
                     nulls,
-                    move |k| g(s0.get(k), s1.get(k))
+                    move |k| g(s0.get(k), s1.get(k)),
+                    move || s0.iter(count).zip(s1.iter(count)).map(|(x, y)| g(x, y))
                 )))
             }),
         });
@@ -311,6 +331,7 @@ impl NodeType {
                             || b[2].is_null(at(k, l2))
                     },
                     move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
+                    move || (0..count).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)])),
                 )
             }),
         });
