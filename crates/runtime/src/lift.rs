@@ -59,6 +59,8 @@ trait Src<'a, T: 'a>: Copy + Send + Sync {
     fn get(self, k: usize) -> &'a T;
     /// The items of iterations `0..count`, in order.
     fn iter(self, count: usize) -> impl Iterator<Item = &'a T>;
+    /// The same items as a parallel iterator (slices split into sub-slices).
+    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T>;
 }
 
 /// A branch with one item per iteration.
@@ -88,6 +90,9 @@ impl<'a, T: Sync> Src<'a, T> for Full<'a, T> {
     fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
         self.0[..count].iter()
     }
+    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        self.0[..count].par_iter()
+    }
 }
 
 impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
@@ -97,6 +102,9 @@ impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
     }
     fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
         std::iter::repeat_n(self.0, count)
+    }
+    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        rayon::iter::repeat_n(self.0, count)
     }
 }
 
@@ -110,6 +118,9 @@ impl<'a, T: Sync> Src<'a, T> for Repeat<'a, T> {
         self.0
             .iter()
             .chain(std::iter::repeat_n(last, count.saturating_sub(self.0.len())))
+    }
+    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        (0..count).into_par_iter().map(move |k| self.get(k))
     }
 }
 
@@ -134,16 +145,42 @@ macro_rules! with_src {
 /// Runs `f` for iterations `0..count`: a null where `is_null(k)`, and a null and an error
 /// where `f` fails. `results` gives the same results as `f` in order, as an iterator (the
 /// serial loop without nulls uses it: slice iterators compile to the tightest loop).
-fn lift_loop<O: Item, I: Iterator<Item = Result<O, NodeError>>>(
+fn lift_loop<O: Item, I, P>(
     count: usize,
     parallel: bool,
     any_nulls: bool,
     is_null: impl Fn(usize) -> bool + Sync,
     f: impl Fn(usize) -> Result<O, NodeError> + Sync,
     results: impl FnOnce() -> I,
-) -> LiftOutput {
+    par_results: impl FnOnce() -> P,
+) -> LiftOutput
+where
+    I: Iterator<Item = Result<O, NodeError>>,
+    P: IndexedParallelIterator<Item = Result<O, NodeError>>,
+{
     let mut errors: Vec<(usize, String)> = Vec::new();
-    let items: Vec<O> = if parallel {
+    let items: Vec<O> = if parallel && !any_nulls {
+        // As the serial loop, over sub-slices on each thread; failures (rare) go through a lock
+        // and are put back in item order.
+        let failed = Mutex::new(Vec::new());
+        let mut items = Vec::new();
+        par_results()
+            .with_min_len(LIFT_CHUNK)
+            .enumerate()
+            .map(|(k, r)| {
+                r.unwrap_or_else(|e| {
+                    failed
+                        .lock()
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .push((k, e.0));
+                    O::placeholder()
+                })
+            })
+            .collect_into_vec(&mut items);
+        errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
+        errors.sort_by_key(|e| e.0);
+        items
+    } else if parallel {
         let failed = Mutex::new(Vec::new());
         let one = |k: usize| {
             if any_nulls && is_null(k) {
@@ -245,7 +282,8 @@ impl NodeType {
                     b[0].has_nulls(),
                     nulls,
                     move |k| g(s0.get(k)),
-                    move || s0.iter(count).map(g)
+                    move || s0.iter(count).map(g),
+                    move || s0.par(count).map(g)
                 ))
             }),
         });
@@ -294,7 +332,8 @@ impl NodeType {
                     any_nulls,
                     nulls,
                     move |k| g(s0.get(k), s1.get(k)),
-                    move || s0.iter(count).zip(s1.iter(count)).map(|(x, y)| g(x, y))
+                    move || s0.iter(count).zip(s1.iter(count)).map(|(x, y)| g(x, y)),
+                    move || s0.par(count).zip(s1.par(count)).map(|(x, y)| g(x, y))
                 )))
             }),
         });
@@ -332,6 +371,11 @@ impl NodeType {
                     },
                     move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
                     move || (0..count).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)])),
+                    move || {
+                        (0..count)
+                            .into_par_iter()
+                            .map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]))
+                    },
                 )
             }),
         });

@@ -133,42 +133,46 @@ fn one_and_lift3_lift_too() {
 }
 
 /// Large branches split over two threads give the same items, nulls and messages as one
-/// thread, in the same order.
+/// thread, in the same order (with and without null items, with failing items).
 #[test]
 fn large_lifted_branches_agree_on_one_and_two_threads() {
     let mut registry = NodeRegistry::new();
     registry.register(lifted(false));
     registry.register(general(false));
     let n = 100_000usize;
-    let mut a = Branch::new(DataType::Number);
-    for i in 0..n {
-        if i % 9_999 == 0 {
-            a.push_null();
-        } else {
-            a.push((i % 10) as f64);
+    for with_nulls in [true, false] {
+        let mut a = Branch::new(DataType::Number);
+        for i in 0..n {
+            if with_nulls && i % 9_999 == 0 {
+                a.push_null();
+            } else {
+                a.push((i % 10) as f64);
+            }
         }
+        let mut ta = DataTree::new();
+        ta.insert(TreePath::zero(), a.clone());
+        ta.insert(TreePath::from([1]), a);
+        let results: Vec<_> = [("test.lifted", 1), ("test.lifted", 2), ("test.general", 1)]
+            .into_iter()
+            .map(|(node_type, threads)| {
+                let text = format!(
+                    r#"(format: 1, nodes: [(id: "n", type: "{node_type}", values: {{"B": 0.5}})],
+                       inputs: {{"a": "n.A"}}, outputs: {{"r": "n.R"}})"#
+                );
+                let mut e = Evaluator::from_text(&text, &registry).unwrap();
+                e.set_threads(threads).unwrap();
+                e.set_input("a", ta.clone()).unwrap();
+                e.evaluate();
+                let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
+                (e.output("r").unwrap().clone(), messages)
+            })
+            .collect();
+        let failing = (0..n)
+            .filter(|i| !(with_nulls && i % 9_999 == 0) && i % 10 >= 8)
+            .count();
+        assert_eq!(results[0].1.len(), 2 * failing);
+        assert_eq!(results[0].0.item_count(), 2 * n);
+        assert_eq!(results[0], results[1]);
+        assert_eq!(results[0], results[2]);
     }
-    let mut ta = DataTree::new();
-    ta.insert(TreePath::zero(), a.clone());
-    ta.insert(TreePath::from([1]), a);
-    let results: Vec<_> = [("test.lifted", 1), ("test.lifted", 2), ("test.general", 1)]
-        .into_iter()
-        .map(|(node_type, threads)| {
-            let text = format!(
-                r#"(format: 1, nodes: [(id: "n", type: "{node_type}", values: {{"B": 0.5}})],
-                   inputs: {{"a": "n.A"}}, outputs: {{"r": "n.R"}})"#
-            );
-            let mut e = Evaluator::from_text(&text, &registry).unwrap();
-            e.set_threads(threads).unwrap();
-            e.set_input("a", ta.clone()).unwrap();
-            e.evaluate();
-            let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
-            (e.output("r").unwrap().clone(), messages)
-        })
-        .collect();
-    let failing = (0..n).filter(|i| i % 9_999 != 0 && i % 10 >= 8).count();
-    assert_eq!(results[0].1.len(), 2 * failing);
-    assert_eq!(results[0].0.item_count(), 2 * n);
-    assert_eq!(results[0], results[1]);
-    assert_eq!(results[0], results[2]);
 }
