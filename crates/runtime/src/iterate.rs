@@ -181,8 +181,21 @@ fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<N
             Some(b) => (lift.run)(&b, bi.count, parallel && bi.count >= PARALLEL_THRESHOLD),
         }
     };
+    // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
+    // over threads only when items are slow enough for that to pay (as within one branch).
     let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
-        iterations.par_iter().map(one).collect()
+        let started = std::time::Instant::now();
+        let first = one(&iterations[0]);
+        let spread = crate::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
+        let rest = &iterations[1..];
+        let mut results = Vec::with_capacity(iterations.len());
+        results.push(first);
+        if spread {
+            results.par_extend(rest.par_iter().map(one));
+        } else {
+            results.extend(rest.iter().map(one));
+        }
+        results
     } else {
         iterations.iter().map(one).collect()
     };

@@ -57,10 +57,10 @@ fn at(k: usize, len: usize) -> usize {
 trait Src<'a, T: 'a>: Copy + Send + Sync {
     /// The item of iteration `k`.
     fn get(self, k: usize) -> &'a T;
-    /// The items of iterations `0..count`, in order.
-    fn iter(self, count: usize) -> impl Iterator<Item = &'a T>;
+    /// The items of iterations `start..end`, in order.
+    fn iter(self, start: usize, end: usize) -> impl Iterator<Item = &'a T>;
     /// The same items as a parallel iterator (slices split into sub-slices).
-    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T>;
+    fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T>;
 }
 
 /// A branch with one item per iteration.
@@ -87,11 +87,11 @@ impl<'a, T: Sync> Src<'a, T> for Full<'a, T> {
     fn get(self, k: usize) -> &'a T {
         &self.0[k]
     }
-    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
-        self.0[..count].iter()
+    fn iter(self, start: usize, end: usize) -> impl Iterator<Item = &'a T> {
+        self.0[start..end].iter()
     }
-    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
-        self.0[..count].par_iter()
+    fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        self.0[start..end].par_iter()
     }
 }
 
@@ -100,11 +100,11 @@ impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
     fn get(self, _: usize) -> &'a T {
         self.0
     }
-    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
-        std::iter::repeat_n(self.0, count)
+    fn iter(self, start: usize, end: usize) -> impl Iterator<Item = &'a T> {
+        std::iter::repeat_n(self.0, end - start)
     }
-    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
-        rayon::iter::repeat_n(self.0, count)
+    fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        rayon::iter::repeat_n(self.0, end - start)
     }
 }
 
@@ -113,14 +113,15 @@ impl<'a, T: Sync> Src<'a, T> for Repeat<'a, T> {
     fn get(self, k: usize) -> &'a T {
         &self.0[at(k, self.0.len())]
     }
-    fn iter(self, count: usize) -> impl Iterator<Item = &'a T> {
-        let last = &self.0[self.0.len() - 1];
-        self.0
-            .iter()
-            .chain(std::iter::repeat_n(last, count.saturating_sub(self.0.len())))
+    fn iter(self, start: usize, end: usize) -> impl Iterator<Item = &'a T> {
+        let n = self.0.len();
+        let last = &self.0[n - 1];
+        let own = &self.0[start.min(n)..end.min(n)];
+        own.iter()
+            .chain(std::iter::repeat_n(last, end - start - own.len()))
     }
-    fn par(self, count: usize) -> impl IndexedParallelIterator<Item = &'a T> {
-        (0..count).into_par_iter().map(move |k| self.get(k))
+    fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
+        (start..end).into_par_iter().map(move |k| self.get(k))
     }
 }
 
@@ -142,90 +143,115 @@ macro_rules! with_src {
     }};
 }
 
+/// The time per item above which a loop is spread over threads: below it, a loop is bound by
+/// memory traffic (a few additions per item), and a second thread only competes for it.
+const PARALLEL_ITEM_NANOS: f64 = 8.0;
+
+/// Whether the measured time of `items` iterations makes the rest worth spreading over threads.
+pub(crate) fn worth_spreading(elapsed: std::time::Duration, items: usize) -> bool {
+    elapsed.as_secs_f64() * 1e9 >= PARALLEL_ITEM_NANOS * items as f64
+}
+
 /// Runs `f` for iterations `0..count`: a null where `is_null(k)`, and a null and an error
-/// where `f` fails. `results` gives the same results as `f` in order, as an iterator (the
-/// serial loop without nulls uses it: slice iterators compile to the tightest loop).
+/// where `f` fails. `results(start, end)` gives the same results as `f` for a range of
+/// iterations as an iterator, and `par_results` as a parallel iterator (slice iterators compile
+/// to the tightest loops). With `parallel`, the first chunk runs on this thread and is timed;
+/// the rest is spread over threads only if items are slow enough for that to pay (see
+/// [`PARALLEL_ITEM_NANOS`]). Either way the results are the same.
 fn lift_loop<O: Item, I, P>(
     count: usize,
     parallel: bool,
     any_nulls: bool,
     is_null: impl Fn(usize) -> bool + Sync,
     f: impl Fn(usize) -> Result<O, NodeError> + Sync,
-    results: impl FnOnce() -> I,
-    par_results: impl FnOnce() -> P,
+    results: impl Fn(usize, usize) -> I,
+    par_results: impl FnOnce(usize, usize) -> P,
 ) -> LiftOutput
 where
     I: Iterator<Item = Result<O, NodeError>>,
     P: IndexedParallelIterator<Item = Result<O, NodeError>>,
 {
     let mut errors: Vec<(usize, String)> = Vec::new();
-    let items: Vec<O> = if parallel && !any_nulls {
-        // As the serial loop, over sub-slices on each thread; failures (rare) go through a lock
-        // and are put back in item order.
-        let failed = Mutex::new(Vec::new());
-        let mut items = Vec::new();
-        par_results()
-            .with_min_len(LIFT_CHUNK)
-            .enumerate()
-            .map(|(k, r)| {
-                r.unwrap_or_else(|e| {
-                    failed
-                        .lock()
-                        .unwrap_or_else(PoisonError::into_inner)
-                        .push((k, e.0));
-                    O::placeholder()
-                })
-            })
-            .collect_into_vec(&mut items);
-        errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
-        errors.sort_by_key(|e| e.0);
-        items
-    } else if parallel {
-        let failed = Mutex::new(Vec::new());
-        let one = |k: usize| {
-            if any_nulls && is_null(k) {
-                return O::placeholder();
-            }
-            f(k).unwrap_or_else(|e| {
-                failed
-                    .lock()
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .push((k, e.0));
+    let one = |k: usize, r: Result<O, NodeError>, errors: &mut Vec<(usize, String)>| {
+        r.unwrap_or_else(|e| {
+            errors.push((k, e.0));
+            O::placeholder()
+        })
+    };
+    let items: Vec<O> = if any_nulls {
+        // Index by index, skipping null items (null inputs are rare in large trees).
+        let item = |k: usize, errors: &mut Vec<(usize, String)>| {
+            if is_null(k) {
                 O::placeholder()
-            })
+            } else {
+                one(k, f(k), errors)
+            }
         };
-        let mut items = Vec::new();
-        (0..count)
-            .into_par_iter()
-            .with_min_len(LIFT_CHUNK)
-            .map(one)
-            .collect_into_vec(&mut items);
-        errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
-        errors.sort_by_key(|e| e.0);
+        if parallel {
+            let failed = Mutex::new(Vec::new());
+            let mut items = Vec::new();
+            (0..count)
+                .into_par_iter()
+                .with_min_len(LIFT_CHUNK)
+                .map(|k| {
+                    let mut local = Vec::new();
+                    let out = item(k, &mut local);
+                    if !local.is_empty() {
+                        failed
+                            .lock()
+                            .unwrap_or_else(PoisonError::into_inner)
+                            .append(&mut local);
+                    }
+                    out
+                })
+                .collect_into_vec(&mut items);
+            errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
+            items
+        } else {
+            (0..count).map(|k| item(k, &mut errors)).collect()
+        }
+    } else if parallel && count > LIFT_CHUNK {
+        let mut items: Vec<O> = Vec::with_capacity(count);
+        let started = std::time::Instant::now();
+        items.extend(
+            results(0, LIFT_CHUNK)
+                .enumerate()
+                .map(|(k, r)| one(k, r, &mut errors)),
+        );
+        if worth_spreading(started.elapsed(), LIFT_CHUNK) {
+            // Over sub-slices on each thread; failures (rare) go through a lock.
+            let failed = Mutex::new(std::mem::take(&mut errors));
+            // An indexed parallel iterator extends the vector in place, in order.
+            items.par_extend(
+                par_results(LIFT_CHUNK, count)
+                    .with_min_len(LIFT_CHUNK)
+                    .enumerate()
+                    .map(|(j, r)| {
+                        r.unwrap_or_else(|e| {
+                            failed
+                                .lock()
+                                .unwrap_or_else(PoisonError::into_inner)
+                                .push((LIFT_CHUNK + j, e.0));
+                            O::placeholder()
+                        })
+                    }),
+            );
+            errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
+        } else {
+            items.extend(
+                results(LIFT_CHUNK, count)
+                    .enumerate()
+                    .map(|(j, r)| one(LIFT_CHUNK + j, r, &mut errors)),
+            );
+        }
         items
-    } else if any_nulls {
-        (0..count)
-            .map(|k| {
-                if is_null(k) {
-                    return O::placeholder();
-                }
-                f(k).unwrap_or_else(|e| {
-                    errors.push((k, e.0));
-                    O::placeholder()
-                })
-            })
-            .collect()
     } else {
-        results()
+        results(0, count)
             .enumerate()
-            .map(|(k, r)| {
-                r.unwrap_or_else(|e| {
-                    errors.push((k, e.0));
-                    O::placeholder()
-                })
-            })
+            .map(|(k, r)| one(k, r, &mut errors))
             .collect()
     };
+    errors.sort_by_key(|e| e.0);
     let column = O::into_column(items);
     if !any_nulls && errors.is_empty() {
         return (Branch::from_column(column), errors);
@@ -282,8 +308,8 @@ impl NodeType {
                     b[0].has_nulls(),
                     nulls,
                     move |k| g(s0.get(k)),
-                    move || s0.iter(count).map(g),
-                    move || s0.par(count).map(g)
+                    move |i, j| s0.iter(i, j).map(g),
+                    move |i, j| s0.par(i, j).map(g)
                 ))
             }),
         });
@@ -332,8 +358,8 @@ impl NodeType {
                     any_nulls,
                     nulls,
                     move |k| g(s0.get(k), s1.get(k)),
-                    move || s0.iter(count).zip(s1.iter(count)).map(|(x, y)| g(x, y)),
-                    move || s0.par(count).zip(s1.par(count)).map(|(x, y)| g(x, y))
+                    move |i, j| s0.iter(i, j).zip(s1.iter(i, j)).map(|(x, y)| g(x, y)),
+                    move |i, j| s0.par(i, j).zip(s1.par(i, j)).map(|(x, y)| g(x, y))
                 )))
             }),
         });
@@ -370,9 +396,9 @@ impl NodeType {
                             || b[2].is_null(at(k, l2))
                     },
                     move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
-                    move || (0..count).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)])),
-                    move || {
-                        (0..count)
+                    move |i, j| (i..j).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)])),
+                    move |i, j| {
+                        (i..j)
                             .into_par_iter()
                             .map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]))
                     },

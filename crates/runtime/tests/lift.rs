@@ -15,6 +15,17 @@ fn add(a: &f64, b: &f64) -> Result<f64, NodeError> {
     Ok(a + b)
 }
 
+/// `add`, made slow enough per item (some microseconds) for the runtime to spread it over
+/// threads.
+fn slow_add(a: &f64, b: &f64) -> Result<f64, NodeError> {
+    let mut x = *a;
+    for _ in 0..20 {
+        x = std::hint::black_box(x.sin());
+    }
+    std::hint::black_box(x);
+    add(a, b)
+}
+
 fn ports(id: &str, optional_b: bool) -> NodeType {
     let b = Port::new("B", "B", DataType::Number);
     NodeType::new(id, "Addition", "A+B", "Test")
@@ -139,6 +150,7 @@ fn large_lifted_branches_agree_on_one_and_two_threads() {
     let mut registry = NodeRegistry::new();
     registry.register(lifted(false));
     registry.register(general(false));
+    registry.register(ports("test.slow", false).lift2(slow_add));
     let n = 100_000usize;
     for with_nulls in [true, false] {
         let mut a = Branch::new(DataType::Number);
@@ -152,7 +164,12 @@ fn large_lifted_branches_agree_on_one_and_two_threads() {
         let mut ta = DataTree::new();
         ta.insert(TreePath::zero(), a.clone());
         ta.insert(TreePath::from([1]), a);
-        let results: Vec<_> = [("test.lifted", 1), ("test.lifted", 2), ("test.general", 1)]
+        let results: Vec<_> = [
+            ("test.lifted", 1),
+            ("test.lifted", 2),
+            ("test.general", 1),
+            ("test.slow", 2),
+        ]
             .into_iter()
             .map(|(node_type, threads)| {
                 let text = format!(
@@ -174,5 +191,6 @@ fn large_lifted_branches_agree_on_one_and_two_threads() {
         assert_eq!(results[0].0.item_count(), 2 * n);
         assert_eq!(results[0], results[1]);
         assert_eq!(results[0], results[2]);
+        assert_eq!(results[0], results[3]);
     }
 }
