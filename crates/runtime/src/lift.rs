@@ -7,8 +7,9 @@
 //! runs through the general iteration with the same results. The fast loop reproduces the
 //! general iteration exactly: longest or shortest list within a branch (shorter branches repeat
 //! their last item), a null where a required item is null, and an error message with the path
-//! and index of each failing item, which leaves a null. Large branches are split over threads;
-//! errors are reported in item order, so results are identical for any thread count.
+//! and index of each failing item, which leaves a null. Large branches are split over threads
+//! when their items are slow enough for that to pay (measured on the first chunk); errors are
+//! reported in item order, so results are identical for any thread count.
 
 use std::sync::{Arc, Mutex, PoisonError};
 
@@ -396,7 +397,9 @@ impl NodeType {
                             || b[2].is_null(at(k, l2))
                     },
                     move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]),
-                    move |i, j| (i..j).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)])),
+                    move |i, j| {
+                        (i..j).map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]))
+                    },
                     move |i, j| {
                         (i..j)
                             .into_par_iter()

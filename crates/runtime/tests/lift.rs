@@ -170,20 +170,20 @@ fn large_lifted_branches_agree_on_one_and_two_threads() {
             ("test.general", 1),
             ("test.slow", 2),
         ]
-            .into_iter()
-            .map(|(node_type, threads)| {
-                let text = format!(
-                    r#"(format: 1, nodes: [(id: "n", type: "{node_type}", values: {{"B": 0.5}})],
+        .into_iter()
+        .map(|(node_type, threads)| {
+            let text = format!(
+                r#"(format: 1, nodes: [(id: "n", type: "{node_type}", values: {{"B": 0.5}})],
                        inputs: {{"a": "n.A"}}, outputs: {{"r": "n.R"}})"#
-                );
-                let mut e = Evaluator::from_text(&text, &registry).unwrap();
-                e.set_threads(threads).unwrap();
-                e.set_input("a", ta.clone()).unwrap();
-                e.evaluate();
-                let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
-                (e.output("r").unwrap().clone(), messages)
-            })
-            .collect();
+            );
+            let mut e = Evaluator::from_text(&text, &registry).unwrap();
+            e.set_threads(threads).unwrap();
+            e.set_input("a", ta.clone()).unwrap();
+            e.evaluate();
+            let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
+            (e.output("r").unwrap().clone(), messages)
+        })
+        .collect();
         let failing = (0..n)
             .filter(|i| !(with_nulls && i % 9_999 == 0) && i % 10 >= 8)
             .count();
