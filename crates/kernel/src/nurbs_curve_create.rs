@@ -34,10 +34,10 @@ impl NurbsCurve {
         }
         if !periodic {
             let n = points.len();
-            if n < degree + 1 {
+            if n <= degree {
                 return Err(Error::TooFewPoints {
                     what: "an open curve of this degree",
-                    needed: degree + 1,
+                    needed: degree.saturating_add(1),
                     got: n,
                 });
             }

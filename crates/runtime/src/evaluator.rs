@@ -27,6 +27,20 @@ pub enum EvalError {
         /// The graph's input names, comma-separated.
         known: String,
     },
+    /// No node has this id.
+    #[error("unknown node \"{id}\"")]
+    UnknownNode {
+        /// The id asked for.
+        id: String,
+    },
+    /// A value given as literal text could not be read against the input's type.
+    #[error("bad value for input \"{name}\": {message}")]
+    BadValue {
+        /// The input's name.
+        name: String,
+        /// What is wrong with the text.
+        message: String,
+    },
     /// A thread pool could not be built.
     #[error("cannot start {threads} threads: {reason}")]
     ThreadPool {
@@ -78,6 +92,8 @@ pub struct Evaluator {
     depth: Vec<usize>,
     threads: Threads,
     last_run: Vec<usize>,
+    /// For each node, its input ports (as the solve function sees them).
+    ports: Vec<Vec<crate::Port>>,
 }
 
 impl Evaluator {
@@ -121,7 +137,13 @@ impl Evaluator {
             })
             .collect();
         let overrides = vec![None; plan.inputs.len()];
+        let ports = plan
+            .nodes
+            .iter()
+            .map(|node| node.inputs.iter().map(|input| input.port.clone()).collect())
+            .collect();
         Self {
+            ports,
             plan,
             states,
             overrides,
@@ -175,10 +197,7 @@ impl Evaluator {
     /// [`EvalError::UnknownInput`] when the graph has no input of that name.
     pub fn set_input(&mut self, name: &str, tree: DataTree) -> Result<(), EvalError> {
         let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name) else {
-            return Err(EvalError::UnknownInput {
-                name: name.to_owned(),
-                known: self.input_names().collect::<Vec<_>>().join(", "),
-            });
+            return Err(self.unknown_input(name));
         };
         if self.overrides[k].as_ref() == Some(&tree) {
             return Ok(());
@@ -189,12 +208,48 @@ impl Evaluator {
         Ok(())
     }
 
+    /// The error for an input name the graph does not have.
+    pub(crate) fn unknown_input(&self, name: &str) -> EvalError {
+        let known: Vec<&str> = self.input_names().collect();
+        EvalError::UnknownInput {
+            name: name.to_owned(),
+            known: if known.is_empty() {
+                "none".to_owned()
+            } else {
+                known.join(", ")
+            },
+        }
+    }
+
     /// Removes a value given with [`set_input`](Self::set_input), going back to the graph's.
     pub fn clear_input(&mut self, name: &str) {
         if let Some(k) = self.plan.inputs.iter().position(|(n, _, _)| n == name)
             && self.overrides[k].take().is_some()
         {
             self.mark_dirty(self.plan.inputs[k].1);
+        }
+    }
+
+    /// Marks node `node` (by id) and everything downstream of it for re-evaluation, as
+    /// Grasshopper's "expire solution" does: for hosts whose data changed behind the graph's back.
+    ///
+    /// # Errors
+    /// [`EvalError::UnknownNode`] when the graph has no node of that id.
+    pub fn expire(&mut self, node: &str) -> Result<(), EvalError> {
+        let Some(i) = self.plan.nodes.iter().position(|n| n.id.0 == node) else {
+            return Err(EvalError::UnknownNode {
+                id: node.to_owned(),
+            });
+        };
+        self.mark_dirty(i);
+        Ok(())
+    }
+
+    /// Marks every node for re-evaluation (a full recompute on the next
+    /// [`evaluate`](Self::evaluate)).
+    pub fn expire_all(&mut self) {
+        for state in &mut self.states {
+            state.dirty = true;
         }
     }
 
@@ -228,20 +283,24 @@ impl Evaluator {
             .copied()
             .filter(|&i| self.states[i].dirty)
             .collect();
-        self.last_run = dirty.clone();
         // Group by depth: nodes of one depth never feed each other.
         let max_depth = dirty.iter().map(|&i| self.depth[i]).max().unwrap_or(0);
-        for d in 0..=max_depth {
-            let wave: Vec<usize> = dirty
-                .iter()
-                .copied()
-                .filter(|&i| self.depth[i] == d)
-                .collect();
+        let mut waves: Vec<Vec<usize>> = vec![Vec::new(); max_depth + 1];
+        for &i in &dirty {
+            waves[self.depth[i]].push(i);
+        }
+        self.last_run = dirty;
+        for wave in waves {
             if wave.is_empty() {
                 continue;
             }
             for &i in &wave {
                 self.ensure_prepared(i);
+                // The old outputs are replaced below; dropping them first lets their memory be
+                // reused for the new ones (no node reads its own outputs).
+                for tree in &mut self.states[i].outputs {
+                    *tree = Arc::new(DataTree::new());
+                }
             }
             let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
                 wave.par_iter()
@@ -267,10 +326,9 @@ impl Evaluator {
         let Some(prepare) = &node.node_type.prepare else {
             return;
         };
-        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
         let config = crate::NodeConfig {
             settings: &node.settings,
-            inputs: &ports,
+            inputs: &self.ports[i],
         };
         let result = catch_unwind(AssertUnwindSafe(|| prepare(&config))).unwrap_or_else(|_| {
             Err(NodeError(
@@ -331,11 +389,10 @@ impl Evaluator {
             }
             return out;
         }
-        let ports: Vec<crate::Port> = node.inputs.iter().map(|input| input.port.clone()).collect();
         let run = NodeRun {
             node_id: &node.id,
             node_type: &node.node_type,
-            inputs: &ports,
+            inputs: &self.ports[i],
             settings: &node.settings,
             matching: node.matching,
             principal: node.principal_input(),
@@ -426,6 +483,12 @@ impl Evaluator {
     /// the graph's node order.
     pub fn messages(&self) -> impl Iterator<Item = &Message> {
         self.states.iter().flat_map(|s| s.messages.iter())
+    }
+
+    /// The runtime messages of one node (by id) from its last run; none for an unknown id.
+    pub fn node_messages(&self, node: &str) -> impl Iterator<Item = &Message> {
+        let i = self.plan.nodes.iter().position(|n| n.id.0 == node);
+        i.into_iter().flat_map(|i| self.states[i].messages.iter())
     }
 
     /// The worst message level of a node, if it has messages.

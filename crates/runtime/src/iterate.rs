@@ -80,6 +80,9 @@ struct Segment {
 
 /// Runs a node on its collected input trees (one per input port, already modified and cast).
 pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> NodeOutput {
+    if let Some(out) = run_lifted(run, data, parallel) {
+        return out;
+    }
     let outputs = &run.node_type.outputs;
     let segments = if NodeType::solves_once(run.inputs) {
         vec![solve_once(run, data)]
@@ -87,9 +90,16 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
         let iterations = branch_iterations(run, data);
         let has_item = run.inputs.iter().any(|p| p.access == Access::Item);
         let mut tasks = Vec::new();
-        let mut total = 0;
+        let total: usize = iterations.iter().map(|bi| bi.count).sum();
+        let parallel = parallel && total >= PARALLEL_THRESHOLD;
+        // Chunks are only for spreading work over threads: on one thread each branch pairing
+        // is one task, so its output branch is built in place and never stitched.
+        let chunk = if parallel {
+            CHUNK_ITERATIONS
+        } else {
+            usize::MAX
+        };
         for (j, bi) in iterations.iter().enumerate() {
-            total += bi.count;
             if bi.count == 0 {
                 tasks.push(Task {
                     branch_iteration: j,
@@ -99,7 +109,7 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
             }
             let mut start = 0;
             while start < bi.count {
-                let end = (start + CHUNK_ITERATIONS).min(bi.count);
+                let end = start.saturating_add(chunk).min(bi.count);
                 tasks.push(Task {
                     branch_iteration: j,
                     start,
@@ -117,13 +127,94 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
                 has_item,
             )
         };
-        if parallel && total >= PARALLEL_THRESHOLD {
+        if parallel {
             tasks.par_iter().map(run_one).collect()
         } else {
             tasks.iter().map(run_one).collect()
         }
     };
     stitch(run.node_id, outputs.len(), segments)
+}
+
+/// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
+/// ports and data fit the loop (see `lift`); `None` to take the general path.
+fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<NodeOutput> {
+    let lift = run.node_type.lift.as_ref()?;
+    let outputs = &run.node_type.outputs;
+    let fits = run.inputs.len() == lift.inputs.len()
+        && run
+            .inputs
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(p, &t)| p.access == Access::Item && !p.optional && p.data_type == t)
+        && outputs.len() == 1
+        && outputs[0].access == Access::Item
+        && outputs[0].data_type == lift.output
+        && run.matching != Matching::Cross
+        && !run.inputs.is_empty();
+    if !fits {
+        return None;
+    }
+    let iterations = branch_iterations(run, data);
+    // Every branch must hold its port's type (casting made it so; a generic column would not).
+    let typed = iterations.iter().all(|bi| {
+        bi.branches
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(b, &t)| b.is_none_or(|b| b.is_empty() || b.data_type() == t))
+    });
+    if !typed {
+        return None;
+    }
+    let total: usize = iterations.iter().map(|bi| bi.count).sum();
+    let parallel = parallel && total >= PARALLEL_THRESHOLD;
+    let one = |bi: &BranchIteration<'_>| {
+        let branches: Option<Vec<&Branch>> = bi
+            .branches
+            .iter()
+            .map(|b| b.filter(|b| !b.is_empty()))
+            .collect();
+        match branches {
+            // A required input with an empty branch: the output branch is empty (gap logic).
+            None => (Branch::new(lift.output), Vec::new()),
+            Some(_) if bi.count == 0 => (Branch::new(lift.output), Vec::new()),
+            Some(b) => (lift.run)(&b, bi.count, parallel && bi.count >= PARALLEL_THRESHOLD),
+        }
+    };
+    // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
+    // over threads only when items are slow enough for that to pay (as within one branch).
+    let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
+        let started = std::time::Instant::now();
+        let first = one(&iterations[0]);
+        let spread = crate::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
+        let rest = &iterations[1..];
+        let mut results = Vec::with_capacity(iterations.len());
+        results.push(first);
+        if spread {
+            results.par_extend(rest.par_iter().map(one));
+        } else {
+            results.extend(rest.iter().map(one));
+        }
+        results
+    } else {
+        iterations.iter().map(one).collect()
+    };
+    let mut messages = Vec::new();
+    let mut pieces = Vec::with_capacity(iterations.len());
+    for (bi, (branch, errors)) in iterations.iter().zip(results) {
+        messages.extend(errors.into_iter().map(|(k, text)| Message {
+            node: run.node_id.clone(),
+            level: Level::Error,
+            path: Some(bi.target.clone()),
+            index: Some(k),
+            text,
+        }));
+        pieces.push((bi.target.clone(), branch));
+    }
+    Some(NodeOutput {
+        outputs: vec![DataTree::from_branches(pieces)],
+        messages,
+    })
 }
 
 fn stitch(node_id: &NodeId, n_outputs: usize, segments: Vec<Segment>) -> NodeOutput {
@@ -305,8 +396,9 @@ fn run_task(
     let mut sinks = new_sinks(&run.node_type.outputs);
     for sink in &mut sinks {
         if sink.access == Access::Item {
+            let column = crate::Column::with_capacity(sink.data_type, task.end - task.start);
             sink.pieces
-                .push((bi.target.clone(), Branch::new(sink.data_type)));
+                .push((bi.target.clone(), Branch::from_column(column)));
         }
     }
     let mut cursors: Vec<Cursor<'_>> = ports

@@ -20,21 +20,24 @@
 //! | Text | `"abc"` with RON escapes (`\"`, `\\`, `\n`, `\u{e9}`) |
 //! | Point, Vector | `(1, 2, 3)` |
 //! | Domain | `(0, 1)`, start then end |
-//! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `ZX` |
+//! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `XZ`, `ZX` |
 //! | Transform | `((a, b, c, d), (e, f, g, h), (i, j, k, l), (m, n, o, p))`: four rows |
+//! | Line, Box, Circle, Arc, Curve, Surface, Brep | see `literal_geometry.rs` |
 //!
-//! Any item may carry its type's name as a tag, `Vector(1, 2, 3)`, `Integer(3)`, `Text("a")`;
-//! a tag must name the port's type. On a `Generic` port the type is taken from the tag, or else from the shape: an integer
-//! without decimal point is an Integer, other numbers are Numbers, `(x, y, z)` is a Point,
-//! `(a, b)` a Domain, three triples a Plane, four quadruples a Transform. The writer tags
-//! vectors in generic trees so that they read back as vectors.
+//! Any item may carry a type's name as a tag, `Vector(1, 2, 3)`, `Integer(3)`, `Text("a")`,
+//! `Box(plane: XY, …)`. A tag of another type than the port's reads the item as that type and
+//! casts it to the port's type as a wire would (`Box(…)` on a Brep port). On a `Generic` port
+//! the type is taken from the tag, or else from the shape: an integer without decimal point is
+//! an Integer, other numbers are Numbers, `(x, y, z)` is a Point, `(a, b)` a Domain, two triples
+//! a Line, three triples a Plane, four quadruples a Transform, and a struct by its field names.
+//! The writer tags vectors in generic trees so that they read back as vectors.
 //!
 //! The axes of a plane are taken as written when they are orthonormal to within
 //! [`UNIT_AXIS_TOLERANCE`] (so that written planes read back exactly); otherwise the y axis is
 //! made perpendicular to the x axis and both are normalized (Gram–Schmidt).
 //!
-//! New value types add their literal form in [`parse_item`] and [`item_node`], typically as a
-//! named struct: `Curve(degree: 3, points: [...], weights: [...], knots: [...])`.
+//! New value types add their literal form in [`parse_item`] and [`item_node`] (geometry in
+//! `literal_geometry`), typically as a struct with named fields.
 
 use std::fmt;
 use std::ops::Range;
@@ -47,6 +50,15 @@ use crate::{Branch, DataTree, DataType, Literal, TreePath, Value};
 /// How far from unit length and from perpendicular the written axes of a plane may be for the
 /// plane to be taken exactly as written (1e-12, a few thousand ulps of 1).
 pub const UNIT_AXIS_TOLERANCE: f64 = 1e-12;
+
+/// Grasshopper's world XZ plane (the XZ Plane component, Rhino's Front view): x axis X, y axis
+/// Z, normal X × Z = −Y. Rhino's `WorldZX` (x axis Z, y axis X, normal Y) is written `ZX`.
+const WORLD_XZ: Plane = Plane {
+    origin: Point3::ORIGIN,
+    x_axis: Vector3::X,
+    y_axis: Vector3::Z,
+    z_axis: Vector3::new(0.0, -1.0, 0.0),
+};
 
 /// Why a literal could not be read or written.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -131,14 +143,14 @@ fn parse_syntax(text: &str) -> Result<Node, LiteralError> {
     })
 }
 
-fn error<T>(node: &Node, message: String) -> Result<T, LiteralError> {
+pub(crate) fn error<T>(node: &Node, message: String) -> Result<T, LiteralError> {
     Err(LiteralError {
         message,
         span: node.span.clone(),
     })
 }
 
-fn mismatch<T>(node: &Node, data_type: DataType) -> Result<T, LiteralError> {
+pub(crate) fn mismatch<T>(node: &Node, data_type: DataType) -> Result<T, LiteralError> {
     error(
         node,
         format!(
@@ -158,12 +170,22 @@ fn expectation(data_type: DataType) -> &'static str {
         DataType::Text => "a text in quotes",
         DataType::Point => "a point (x, y, z)",
         DataType::Vector => "a vector (x, y, z)",
-        DataType::Plane => "a plane ((origin), (x axis), (y axis)) or XY, YZ, ZX",
+        DataType::Plane => "a plane ((origin), (x axis), (y axis)) or XY, YZ, XZ, ZX",
         DataType::Domain => "a domain (start, end)",
         DataType::Transform => "a transform of four rows ((a, b, c, d), …)",
+        DataType::Box => "a box (plane: …, x: (x0, x1), y: (y0, y1), z: (z0, z1))",
+        DataType::Line => "a line ((start), (end))",
+        DataType::Circle => "a circle (plane: …, radius: r)",
+        DataType::Arc => "an arc (plane: …, radius: r, angle: (a0, a1))",
+        DataType::Curve => {
+            "a curve (degree: d, points: […], knots: […]) or (line: …), (polyline: […]), \
+             (circle: …), (arc: …)"
+        }
+        DataType::Surface => {
+            "a surface (degree: (du, dv), points: [[…], …], knots_u: […], knots_v: […])"
+        }
+        DataType::Brep => "a box or a surface literal for a B-rep",
         DataType::Generic => "a value",
-        #[allow(unreachable_patterns, reason = "value types are added over time")]
-        _ => "a value of this type",
     }
 }
 
@@ -241,25 +263,49 @@ pub(crate) fn parse_item(node: &Node, data_type: DataType) -> Result<Option<Valu
     }
     // A tagged item, such as `Vector(1, 2, 3)`: the tag must name the port's type (or give the
     // type of a generic item).
-    if let Kind::Tuple(Some(tag), items) = &node.kind {
-        let tagged = DataType::from_name(tag).filter(|t| *t != DataType::Generic);
-        return match tagged {
-            Some(t) if t == data_type || data_type == DataType::Generic => {
-                // `Number(1)`, `Text("a")`, `Plane(XY)`: the tag wraps the item itself.
-                if let [item] = items.as_slice()
-                    && (!matches!(item.kind, Kind::Number(_))
-                        || matches!(t, DataType::Number | DataType::Integer))
-                {
-                    return parse_item(item, t);
-                }
-                let untagged = Node {
+    // A tag of another type reads the item as that type and casts it to the port's type, as
+    // a wire would: `Box(…)` on a B-rep port, `Circle(…)` on a curve port.
+    let tag = match &node.kind {
+        Kind::Tuple(Some(tag), _) | Kind::Struct(Some(tag), _) => Some(tag),
+        _ => None,
+    };
+    if let Some(tag) = tag {
+        let Some(t) = DataType::from_name(tag).filter(|t| *t != DataType::Generic) else {
+            return error(node, format!("unknown value type `{tag}`"));
+        };
+        let value = match &node.kind {
+            // `Number(1)`, `Text("a")`, `Plane(XY)`: the tag wraps the item itself.
+            Kind::Tuple(_, items)
+                if items.len() == 1
+                    && (!matches!(items[0].kind, Kind::Number(_))
+                        || matches!(t, DataType::Number | DataType::Integer)) =>
+            {
+                parse_item(&items[0], t)?
+            }
+            Kind::Tuple(_, items) => parse_item(
+                &Node {
                     kind: Kind::Tuple(None, items.clone()),
                     span: node.span.clone(),
-                };
-                parse_item(&untagged, t)
+                },
+                t,
+            )?,
+            Kind::Struct(_, fields) => parse_item(
+                &Node {
+                    kind: Kind::Struct(None, fields.clone()),
+                    span: node.span.clone(),
+                },
+                t,
+            )?,
+            _ => None,
+        };
+        return match value {
+            Some(v) if t != data_type && data_type != DataType::Generic => {
+                match crate::cast_value(&v, data_type) {
+                    Ok(cast) => Ok(Some(cast)),
+                    Err(e) => error(node, e.to_string()),
+                }
             }
-            Some(_) => mismatch(node, data_type),
-            None => error(node, format!("unknown value type `{tag}`")),
+            v => Ok(v),
         };
     }
     let value = match data_type {
@@ -293,13 +339,15 @@ pub(crate) fn parse_item(node: &Node, data_type: DataType) -> Result<Option<Valu
             Value::Transform(Transform::from_rows(rows))
         }
         DataType::Generic => return infer_item(node),
-        #[allow(unreachable_patterns, reason = "value types are added over time")]
-        other => {
-            return error(
-                node,
-                format!("values of type {other} have no literal form yet"),
-            );
-        }
+        other => match crate::literal_geometry::parse_geometry(node, other) {
+            Some(value) => value?,
+            None => {
+                return error(
+                    node,
+                    format!("values of type {other} have no literal form yet"),
+                );
+            }
+        },
     };
     Ok(Some(value))
 }
@@ -312,12 +360,25 @@ fn infer_item(node: &Node) -> Result<Option<Value>, LiteralError> {
         Kind::Bool(_) => DataType::Boolean,
         Kind::Str(_) => DataType::Text,
         Kind::Ident(i) if plane_by_name(i).is_some() => DataType::Plane,
+        Kind::Struct(None, _) => match crate::literal_geometry::struct_type(node) {
+            Some(t) => t,
+            None => {
+                return error(
+                    node,
+                    format!(
+                        "cannot tell the type of {}: tag it as in Circle(plane: XY, radius: 1)",
+                        node.describe()
+                    ),
+                );
+            }
+        },
         Kind::Tuple(None, items) => {
             let all = |k: fn(&Node) -> bool| items.iter().all(k);
             let is_number = |n: &Node| matches!(n.kind, Kind::Number(_));
             let is_tuple_of = |len: usize| move |n: &Node| matches!(&n.kind, Kind::Tuple(None, v) if v.len() == len && v.iter().all(is_number));
             match items.len() {
                 2 if all(is_number) => DataType::Domain,
+                2 if items.iter().all(is_tuple_of(3)) => DataType::Line,
                 3 if all(is_number) => DataType::Point,
                 3 if items.iter().all(is_tuple_of(3)) => DataType::Plane,
                 4 if items.iter().all(is_tuple_of(4)) => DataType::Transform,
@@ -326,8 +387,8 @@ fn infer_item(node: &Node) -> Result<Option<Value>, LiteralError> {
                         node,
                         format!(
                             "cannot tell the type of {}: write a point (x, y, z), a domain \
-                             (start, end), a plane of three triples or a transform of four rows, \
-                             or tag it as in Vector(1, 2, 3)",
+                             (start, end), a line of two triples, a plane of three triples or a \
+                             transform of four rows, or tag it as in Vector(1, 2, 3)",
                             node.describe()
                         ),
                     );
@@ -343,7 +404,7 @@ fn is_integer_lexeme(n: &str) -> bool {
     !n.contains(['.', 'e', 'E', 'i', 'N'])
 }
 
-fn number(node: &Node, data_type: DataType) -> Result<f64, LiteralError> {
+pub(crate) fn number(node: &Node, data_type: DataType) -> Result<f64, LiteralError> {
     match &node.kind {
         Kind::Number(n) => n
             .replace('_', "")
@@ -382,7 +443,10 @@ fn tuple_of<const N: usize, T: Copy + Default>(
 }
 
 /// Reads `(a, b, …)` of `N` numbers; a non-number names the enclosing type.
-fn numbers<const N: usize>(node: &Node, data_type: DataType) -> Result<[f64; N], LiteralError> {
+pub(crate) fn numbers<const N: usize>(
+    node: &Node,
+    data_type: DataType,
+) -> Result<[f64; N], LiteralError> {
     tuple_of::<N, f64>(node, data_type, |item| match &item.kind {
         Kind::Number(_) => number(item, data_type),
         _ => error(
@@ -404,12 +468,13 @@ fn plane_by_name(name: &str) -> Option<Plane> {
     match name {
         "XY" => Some(Plane::WORLD_XY),
         "YZ" => Some(Plane::WORLD_YZ),
+        "XZ" => Some(WORLD_XZ),
         "ZX" => Some(Plane::WORLD_ZX),
         _ => None,
     }
 }
 
-fn plane(node: &Node) -> Result<Plane, LiteralError> {
+pub(crate) fn plane(node: &Node) -> Result<Plane, LiteralError> {
     if let Kind::Ident(name) = &node.kind {
         return match plane_by_name(name) {
             Some(p) => Ok(p),
@@ -468,13 +533,13 @@ fn branch_items(branch: &Branch) -> Result<Vec<Node>, LiteralError> {
         .collect()
 }
 
-fn number_node(x: f64) -> Node {
+pub(crate) fn number_node(x: f64) -> Node {
     // `{:?}` is the shortest text that reads back to the same `f64`, and always has a
     // decimal point or exponent (or is `inf` or `NaN`), so it reads back as a Number.
     Node::new(Kind::Number(format!("{x:?}")))
 }
 
-fn numbers_node<const N: usize>(values: [f64; N]) -> Node {
+pub(crate) fn numbers_node<const N: usize>(values: [f64; N]) -> Node {
     Node::new(Kind::Tuple(None, values.map(number_node).to_vec()))
 }
 
@@ -493,24 +558,27 @@ pub(crate) fn item_node(value: &Value, in_generic: bool) -> Result<Node, Literal
         Value::Domain(d) => numbers_node([d.t0, d.t1]),
         Value::Plane(p) => plane_node(p),
         Value::Transform(t) => Node::new(Kind::Tuple(None, t.to_rows().map(numbers_node).to_vec())),
-        #[allow(unreachable_patterns, reason = "value types are added over time")]
-        other => {
-            return Err(LiteralError {
-                message: format!(
-                    "values of type {} have no literal form yet",
-                    other.data_type()
-                ),
-                span: 0..0,
-            });
-        }
+        other => match crate::literal_geometry::geometry_node(other) {
+            Some(node) => node?,
+            None => {
+                return Err(LiteralError {
+                    message: format!(
+                        "values of type {} have no literal form yet",
+                        other.data_type()
+                    ),
+                    span: 0..0,
+                });
+            }
+        },
     };
     Ok(node)
 }
 
-fn plane_node(p: &Plane) -> Node {
+pub(crate) fn plane_node(p: &Plane) -> Node {
     for (name, named) in [
         ("XY", Plane::WORLD_XY),
         ("YZ", Plane::WORLD_YZ),
+        ("XZ", WORLD_XZ),
         ("ZX", Plane::WORLD_ZX),
     ] {
         if *p == named {

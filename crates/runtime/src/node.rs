@@ -239,6 +239,9 @@ pub struct NodeType {
     pub solve: SolveFn,
     /// The optional prepare function.
     pub prepare: Option<PrepareFn>,
+    /// The item function behind `solve`, when the type was declared with `lift1`/`lift2`/
+    /// `lift3`: the runtime runs it as a loop over typed columns.
+    pub(crate) lift: Option<crate::lift::Lift>,
 }
 
 impl fmt::Debug for NodeType {
@@ -269,6 +272,7 @@ impl NodeType {
             settings: Vec::new(),
             solve: Arc::new(|_| Ok(())),
             prepare: None,
+            lift: None,
         }
     }
 
@@ -333,6 +337,7 @@ impl NodeType {
         f: impl Fn(&mut Solve<'_>) -> Result<(), NodeError> + Send + Sync + 'static,
     ) -> Self {
         self.solve = Arc::new(f);
+        self.lift = None;
         self
     }
 

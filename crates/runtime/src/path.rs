@@ -8,13 +8,53 @@ use std::str::FromStr;
 ///
 /// Paths order lexicographically, element by element, and a path sorts before every longer path
 /// it is a prefix of (`{0} < {0;0} < {0;1} < {1}`). Branches of a tree are kept in this order.
-#[derive(Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct TreePath(Vec<u32>);
+///
+/// Paths of up to [`TreePath::INLINE`] indices are stored inline, without a heap allocation
+/// (grafting a million items makes a million paths); longer ones are boxed.
+#[derive(Clone)]
+pub struct TreePath(Repr);
+
+/// The storage of a path: a small inline array, or a boxed slice for deep paths.
+#[derive(Clone)]
+enum Repr {
+    Inline {
+        len: u8,
+        items: [u32; TreePath::INLINE],
+    },
+    Heap(Box<[u32]>),
+}
+
+impl Default for TreePath {
+    /// A path with no index (only useful as a placeholder; [`TreePath::new`] never makes one).
+    fn default() -> Self {
+        Self(Repr::Inline {
+            len: 0,
+            items: [0; Self::INLINE],
+        })
+    }
+}
 
 impl TreePath {
+    /// How many indices a path holds without a heap allocation.
+    pub const INLINE: usize = 5;
+
+    /// The path of these indices (an empty slice gives an empty path).
+    fn from_slice(indices: &[u32]) -> Self {
+        if indices.len() <= Self::INLINE {
+            let mut items = [0; Self::INLINE];
+            items[..indices.len()].copy_from_slice(indices);
+            Self(Repr::Inline {
+                len: indices.len() as u8,
+                items,
+            })
+        } else {
+            Self(Repr::Heap(indices.into()))
+        }
+    }
+
     /// The path `{0}`, where single items and flat lists live.
     pub fn zero() -> Self {
-        Self(vec![0])
+        Self::from_slice(&[0])
     }
 
     /// A path from its indices. An empty slice gives `{0}`: a path always has an index.
@@ -22,53 +62,108 @@ impl TreePath {
         let indices = indices.into();
         if indices.is_empty() {
             Self::zero()
+        } else if indices.len() <= Self::INLINE {
+            Self::from_slice(&indices)
         } else {
-            Self(indices)
+            Self(Repr::Heap(indices.into_boxed_slice()))
         }
     }
 
     /// The indices of the path.
+    #[inline]
     pub fn indices(&self) -> &[u32] {
-        &self.0
+        match &self.0 {
+            Repr::Inline { len, items } => &items[..usize::from(*len)],
+            Repr::Heap(items) => items,
+        }
     }
 
     /// The number of indices (the depth of the branch).
     pub fn len(&self) -> usize {
-        self.0.len()
+        self.indices().len()
     }
 
     /// Always false: a path has at least one index. Present for API symmetry with `len`.
     pub fn is_empty(&self) -> bool {
-        self.0.is_empty()
+        self.indices().is_empty()
     }
 
     /// This path with `index` appended: `{0;1}` with 4 gives `{0;1;4}`.
     pub fn with_appended(&self, index: u32) -> Self {
-        let mut v = Vec::with_capacity(self.0.len() + 1);
-        v.extend_from_slice(&self.0);
+        let old = self.indices();
+        if old.len() < Self::INLINE {
+            let mut items = [0; Self::INLINE];
+            items[..old.len()].copy_from_slice(old);
+            items[old.len()] = index;
+            return Self(Repr::Inline {
+                len: old.len() as u8 + 1,
+                items,
+            });
+        }
+        let mut v = Vec::with_capacity(old.len() + 1);
+        v.extend_from_slice(old);
         v.push(index);
-        Self(v)
+        Self(Repr::Heap(v.into_boxed_slice()))
     }
 
     /// This path with its last index increased by `offset` (Grasshopper's collision offset).
     pub fn with_last_offset(&self, offset: u32) -> Self {
-        let mut v = self.0.clone();
-        if let Some(last) = v.last_mut() {
+        let mut path = self.clone();
+        let last = match &mut path.0 {
+            Repr::Inline { len, items } => items[..usize::from(*len)].last_mut(),
+            Repr::Heap(items) => items.last_mut(),
+        };
+        if let Some(last) = last {
             *last = last.saturating_add(offset);
         }
-        Self(v)
+        path
     }
 
     /// The last index.
     pub fn last(&self) -> u32 {
-        self.0.last().copied().unwrap_or(0)
+        self.indices().last().copied().unwrap_or(0)
+    }
+}
+
+impl PartialEq for TreePath {
+    #[inline]
+    fn eq(&self, other: &Self) -> bool {
+        self.indices() == other.indices()
+    }
+}
+
+impl Eq for TreePath {}
+
+impl PartialOrd for TreePath {
+    #[inline]
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for TreePath {
+    #[inline]
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.indices().cmp(other.indices())
+    }
+}
+
+impl std::hash::Hash for TreePath {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.indices().hash(state);
+    }
+}
+
+impl fmt::Debug for TreePath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_tuple("TreePath").field(&self.indices()).finish()
     }
 }
 
 impl fmt::Display for TreePath {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("{")?;
-        for (i, index) in self.0.iter().enumerate() {
+        for (i, index) in self.indices().iter().enumerate() {
             if i > 0 {
                 f.write_str(";")?;
             }
@@ -118,19 +213,23 @@ impl FromStr for TreePath {
                 .map_err(|_| err("indices must be non-negative integers"))?;
             indices.push(index);
         }
-        Ok(Self(indices))
+        Ok(Self::new(indices))
     }
 }
 
 impl From<&[u32]> for TreePath {
     fn from(indices: &[u32]) -> Self {
-        Self::new(indices.to_vec())
+        if indices.is_empty() {
+            Self::zero()
+        } else {
+            Self::from_slice(indices)
+        }
     }
 }
 
 impl<const N: usize> From<[u32; N]> for TreePath {
     fn from(indices: [u32; N]) -> Self {
-        Self::new(indices.to_vec())
+        Self::from(&indices[..])
     }
 }
 
@@ -151,6 +250,36 @@ mod tests {
         for bad in ["{}", "{-1}", "{0;;1}", "{0", "{a}", ""] {
             assert!(bad.parse::<TreePath>().is_err(), "{bad}");
         }
+    }
+
+    #[test]
+    fn short_and_long_paths_behave_alike() {
+        let long: Vec<u32> = (0..9).collect();
+        let p = TreePath::new(long.clone());
+        assert_eq!(p.indices(), &long[..]);
+        assert_eq!(p.to_string(), "{0;1;2;3;4;5;6;7;8}");
+        // Crossing the inline limit by appending, both ways of building compare equal.
+        let mut q = TreePath::zero();
+        for i in 1..9 {
+            q = q.with_appended(i);
+        }
+        assert_eq!(q, p);
+        assert_eq!(q.with_last_offset(2).last(), 10);
+        assert_eq!(
+            TreePath::from(&long[..5]),
+            TreePath::new(long[..5].to_vec())
+        );
+        assert!(TreePath::from(&long[..5]) < p);
+        assert!(TreePath::from([0, 2]) > p);
+        let hash = |p: &TreePath| {
+            use std::hash::{BuildHasher, RandomState};
+            let s = RandomState::new();
+            (s.hash_one(p), s.hash_one(p.indices()))
+        };
+        let (a, b) = hash(&p);
+        assert_eq!(a, b);
+        assert_eq!(format!("{:?}", TreePath::from([0, 1])), "TreePath([0, 1])");
+        assert_eq!(std::mem::size_of::<TreePath>(), 24);
     }
 
     #[test]

@@ -33,7 +33,7 @@ pub enum SimplifyMode {
 }
 
 impl DataTree {
-    /// Removes path indices shared by all branches; see the [module docs](self) for the rules.
+    /// Removes path indices shared by all branches; see `docs/data-trees.md` for the rules.
     ///
     /// `{0;0;0;1;0} {0;3;0;2;0} {0;8;0;3;0}` becomes `{0;1} {3;2} {8;3}` with
     /// [`SimplifyMode::All`] and `{0;0;1;0} {3;0;2;0} {8;0;3;0}` with

@@ -118,11 +118,33 @@ impl<'a> Solve<'a> {
         self.ports.get(input).map_or("?", |p| p.nickname.as_str())
     }
 
+    #[inline]
     fn cursor(&self, input: usize) -> Result<Cursor<'a>, NodeError> {
-        self.cursors
-            .get(input)
-            .copied()
-            .ok_or_else(|| NodeError(format!("internal: the node has no input {input}")))
+        match self.cursors.get(input) {
+            Some(c) => Ok(*c),
+            None => Err(Self::no_input(input)),
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn no_input(input: usize) -> NodeError {
+        NodeError(format!("internal: the node has no input {input}"))
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn no_item(&self, input: usize) -> NodeError {
+        NodeError(format!("input {} has no item", self.port_name(input)))
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn wrong_access(&self, input: usize, access: &str) -> NodeError {
+        NodeError(format!(
+            "internal: input {} is not {access} access",
+            self.port_name(input)
+        ))
     }
 
     /// The number of inputs (for nodes with variable inputs).
@@ -145,24 +167,15 @@ impl<'a> Solve<'a> {
         match self.cursor(input)? {
             Cursor::Item(Some(branch), Some(k)) => {
                 if branch.is_null(k) {
-                    return Err(NodeError(format!(
-                        "input {} has no item",
-                        self.port_name(input)
-                    )));
+                    return Err(self.no_item(input));
                 }
-                match T::slice(branch.column()) {
-                    Some(s) => Ok(&s[k]),
-                    None => Err(self.type_error::<T>(input, branch)),
+                match T::slice(branch.column()).and_then(|s| s.get(k)) {
+                    Some(item) => Ok(item),
+                    None => Err(self.type_error(input, branch, T::TYPE)),
                 }
             }
-            Cursor::Item(..) => Err(NodeError(format!(
-                "input {} has no item",
-                self.port_name(input)
-            ))),
-            _ => Err(NodeError(format!(
-                "internal: input {} is not item access",
-                self.port_name(input)
-            ))),
+            Cursor::Item(..) => Err(self.no_item(input)),
+            _ => Err(self.wrong_access(input, "item")),
         }
     }
 
@@ -206,7 +219,7 @@ impl<'a> Solve<'a> {
                         items,
                         branch: Some(branch),
                     }),
-                    None => Err(self.type_error::<T>(input, branch)),
+                    None => Err(self.type_error(input, branch, T::TYPE)),
                 }
             }
             _ => Err(NodeError(format!(
@@ -239,12 +252,14 @@ impl<'a> Solve<'a> {
         }
     }
 
-    fn type_error<T: Item>(&self, input: usize, branch: &Branch) -> NodeError {
+    #[cold]
+    #[inline(never)]
+    fn type_error(&self, input: usize, branch: &Branch, read_as: crate::DataType) -> NodeError {
         NodeError(format!(
             "internal: input {} holds {} items, read as {}",
             self.port_name(input),
             branch.data_type(),
-            T::TYPE
+            read_as
         ))
     }
 

@@ -129,6 +129,7 @@ impl Branch {
     }
 
     /// Appends a typed item. An item of another type than the column turns it generic.
+    #[inline]
     pub fn push<T: Item>(&mut self, item: T) {
         match T::vec_mut(&mut self.items) {
             Some(v) => v.push(item),

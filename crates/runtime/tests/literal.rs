@@ -75,6 +75,22 @@ fn items_of_every_type() {
 }
 
 #[test]
+fn tags_of_another_type_cast_as_a_wire_would() {
+    assert_eq!(
+        read("Vector(1, 2, 3)", DataType::Point),
+        DataTree::from_item(Point3::new(1.0, 2.0, 3.0))
+    );
+    assert_eq!(
+        read("Number(2.6)", DataType::Integer),
+        DataTree::from_item(3i64)
+    );
+    assert_eq!(
+        read("Integer(2)", DataType::Text),
+        DataTree::from_item("2".to_owned())
+    );
+}
+
+#[test]
 fn lists_trees_and_nulls() {
     assert_eq!(
         read("[1, 2, 3]", DataType::Number),
@@ -174,9 +190,9 @@ fn errors_say_what_was_expected() {
             "expected a text in quotes, found abc",
         ),
         (
-            "XZ",
+            "ZY",
             DataType::Plane,
-            "expected a plane ((origin), (x axis), (y axis)) or XY, YZ, ZX, found XZ",
+            "expected a plane ((origin), (x axis), (y axis)) or XY, YZ, XZ, ZX, found ZY",
         ),
         (
             "((0, 0, 0), (1, 0, 0), (2, 0, 0))",
@@ -189,9 +205,9 @@ fn errors_say_what_was_expected() {
             "expected a transform of four rows ((a, b, c, d), …), found a tuple of 1 item",
         ),
         (
-            "Vector(1, 2, 3)",
+            "Boolean(true)",
             DataType::Point,
-            "expected a point (x, y, z), found Vector(…)",
+            "invalid cast: Boolean → Point",
         ),
         (
             "Colour(1, 2, 3)",
@@ -201,7 +217,7 @@ fn errors_say_what_was_expected() {
         (
             "(1, 2, 3, 4, 5)",
             DataType::Generic,
-            "cannot tell the type of a tuple of 5 items: write a point (x, y, z), a domain (start, end), a plane of three triples or a transform of four rows, or tag it as in Vector(1, 2, 3)",
+            "cannot tell the type of a tuple of 5 items: write a point (x, y, z), a domain (start, end), a line of two triples, a plane of three triples or a transform of four rows, or tag it as in Vector(1, 2, 3)",
         ),
         (
             r#"{"{0}": 1}"#,

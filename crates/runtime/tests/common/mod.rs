@@ -30,6 +30,13 @@ pub fn registry() -> NodeRegistry {
         DataType::Transform,
     ));
     r.register(param("params.generic", "Data", "D", DataType::Generic));
+    r.register(param("params.box", "Box", "Box", DataType::Box));
+    r.register(param("params.line", "Line", "L", DataType::Line));
+    r.register(param("params.circle", "Circle", "C", DataType::Circle));
+    r.register(param("params.arc", "Arc", "A", DataType::Arc));
+    r.register(param("params.curve", "Curve", "Crv", DataType::Curve));
+    r.register(param("params.surface", "Surface", "Srf", DataType::Surface));
+    r.register(param("params.brep", "Brep", "B", DataType::Brep));
     r.register(
         NodeType::new("vector.dot_product", "Dot Product", "DProd", "Vector")
             .input(Port::new("Vector A", "A", DataType::Vector))
