@@ -57,9 +57,15 @@ pub fn compare_trees(
                 _ => false,
             };
             if !same {
+                let detail = match (&av, &ev) {
+                    (Some(x), Some(y)) => first_difference(x, y, tolerance)
+                        .map(|d| format!(" ({d})"))
+                        .unwrap_or_default(),
+                    _ => String::new(),
+                };
                 push(
                     format!(
-                        "{path}[{i}]: expected {}, got {}",
+                        "{path}[{i}]: expected {}, got {}{detail}",
                         show(ev.as_ref()),
                         show(av.as_ref())
                     ),
@@ -130,6 +136,66 @@ fn nurbs_near(a: &NurbsCurve, b: &NurbsCurve, tolerance: f64) -> bool {
             .all(|(p, q)| point_near(*p, *q, tolerance))
         && all_near(a.weights(), b.weights(), tolerance)
         && all_near(a.knots(), b.knots(), tolerance)
+}
+
+/// Where two curves or surfaces that print alike first differ (`control point 3: expected …,
+/// got …`); `None` for other values, whose printed forms already show the difference.
+fn first_difference(actual: &Value, expected: &Value, tolerance: f64) -> Option<String> {
+    fn points(what: &str, a: &[Point3], e: &[Point3], tolerance: f64) -> Option<String> {
+        if a.len() != e.len() {
+            return Some(format!("{} {what}s expected, got {}", e.len(), a.len()));
+        }
+        let i = a
+            .iter()
+            .zip(e)
+            .position(|(p, q)| !point_near(*p, *q, tolerance))?;
+        Some(format!(
+            "{what} {i}: expected {}, got {}",
+            format_value(&Value::Point(e[i])),
+            format_value(&Value::Point(a[i]))
+        ))
+    }
+    fn numbers(what: &str, a: &[f64], e: &[f64], tolerance: f64) -> Option<String> {
+        if a.len() != e.len() {
+            return Some(format!("{} {what}s expected, got {}", e.len(), a.len()));
+        }
+        let i = a
+            .iter()
+            .zip(e)
+            .position(|(x, y)| !near(*x, *y, tolerance))?;
+        Some(format!("{what} {i}: expected {}, got {}", e[i], a[i]))
+    }
+    match (actual, expected) {
+        (Value::Curve(a), Value::Curve(e)) => {
+            let (a, e) = (a.to_nurbs(), e.to_nurbs());
+            if a.degree() != e.degree() {
+                return Some(format!(
+                    "degree {} expected, got {}",
+                    e.degree(),
+                    a.degree()
+                ));
+            }
+            points("control point", a.points(), e.points(), tolerance)
+                .or_else(|| numbers("weight", a.weights(), e.weights(), tolerance))
+                .or_else(|| numbers("knot", a.knots(), e.knots(), tolerance))
+        }
+        (Value::Surface(a), Value::Surface(e)) => {
+            if (a.degree_u(), a.degree_v()) != (e.degree_u(), e.degree_v()) {
+                return Some(format!(
+                    "degrees {}×{} expected, got {}×{}",
+                    e.degree_u(),
+                    e.degree_v(),
+                    a.degree_u(),
+                    a.degree_v()
+                ));
+            }
+            points("control point", a.points(), e.points(), tolerance)
+                .or_else(|| numbers("weight", a.weights(), e.weights(), tolerance))
+                .or_else(|| numbers("u knot", a.knots_u(), e.knots_u(), tolerance))
+                .or_else(|| numbers("v knot", a.knots_v(), e.knots_v(), tolerance))
+        }
+        _ => None,
+    }
 }
 
 /// Whether two values agree within `tolerance` (see [`compare_trees`]). Values of different
@@ -221,5 +287,25 @@ mod tests {
             compare_trees(&a, &b, COMPARE_TOLERANCE, 10),
             ["branches differ: expected {0;0}, got {0}"]
         );
+    }
+
+    #[test]
+    fn curves_that_print_alike_name_their_first_difference() {
+        let curve = |y: f64| {
+            let points = [
+                Point3::ORIGIN,
+                Point3::new(1.0, y, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+            ];
+            let c = NurbsCurve::create(&points, 2, false).expect("a curve");
+            DataTree::from_item(crate::Shared::new(locus_kernel::Curve::from(c)))
+        };
+        let lines = compare_trees(&curve(1.0), &curve(1.5), COMPARE_TOLERANCE, 10);
+        assert_eq!(lines.len(), 1);
+        assert!(
+            lines[0].ends_with("(control point 1: expected {1, 1.5, 0}, got {1, 1, 0})"),
+            "{lines:?}"
+        );
+        assert!(compare_trees(&curve(1.0), &curve(1.0), COMPARE_TOLERANCE, 10).is_empty());
     }
 }
