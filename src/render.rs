@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use locus_kernel::{Plane, Point3};
+use locus_kernel::{LoopKind, NurbsSurface, Plane, Point3};
 use locus_runtime::{DataTree, Message, Value, format_value};
 use serde_json::{Map, Value as Json, json};
 
@@ -92,16 +92,21 @@ pub fn value_json(value: &Value) -> Json {
                 "domain": [number_json(d.t0), number_json(d.t1)],
             }})
         }
-        Value::Surface(s) => json!({ "surface": {
-            "degree": [s.degree_u(), s.degree_v()],
-            "count": [s.count_u(), s.count_v()],
-            "points": s.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
-            "weights": s.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
-            "knots_u": s.knots_u().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
-            "knots_v": s.knots_v().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
-        }}),
+        Value::Surface(s) => json!({ "surface": surface_json(s) }),
         Value::Brep(b) => json!({ "brep": {
-            "faces": b.faces().len(),
+            "faces": b.faces().iter().map(|f| json!({
+                "surface": surface_json(&f.surface),
+                "reversed": f.reversed,
+                // Each loop, the outer one first, as the edges its trims run along (null for a
+                // trim without an edge: a singular side, such as a sphere's pole).
+                "loops": f.loops.iter().map(|&l| {
+                    let lp = &b.loops()[l];
+                    json!({
+                        "outer": lp.kind == LoopKind::Outer,
+                        "edges": lp.trims.iter().map(|&t| b.trims()[t].edge).collect::<Vec<_>>(),
+                    })
+                }).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
             "edges": b.edges().iter().map(|e| {
                 let c = &e.curve;
                 json!({
@@ -115,6 +120,17 @@ pub fn value_json(value: &Value) -> Json {
             "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
         }}),
     }
+}
+
+fn surface_json(s: &NurbsSurface) -> Json {
+    json!({
+        "degree": [s.degree_u(), s.degree_v()],
+        "count": [s.count_u(), s.count_v()],
+        "points": s.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
+        "weights": s.weights().iter().map(|&w| number_json(w)).collect::<Vec<_>>(),
+        "knots_u": s.knots_u().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+        "knots_v": s.knots_v().iter().map(|&k| number_json(k)).collect::<Vec<_>>(),
+    })
 }
 
 fn point_json(p: Point3) -> Json {

@@ -142,3 +142,66 @@ fn nodes_and_describe_show_the_catalogue() {
     assert_eq!(o.status.code(), Some(0));
     assert!(stdout(&o).starts_with("digraph"));
 }
+
+#[test]
+fn the_readme_example_prints_what_the_readme_shows() {
+    let o = locus(&[
+        "run",
+        "graphs/tangent_spheres.ron",
+        "--set",
+        "t=0.5",
+        "--set",
+        "B=(10, 0, 0)",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    for shown in [
+        "D:\n  {0} (1 item)\n    0. {5, 0, 0}\n",
+        "C1:\n  {0} (1 item)\n    0. {2.5, 0, 0}\n",
+        "r1:\n  {0} (1 item)\n    0. 2.5\n",
+        "S1:\n  {0} (1 item)\n    0. NURBS Surface (degree 2×2, 9×5 points)\n",
+    ] {
+        assert!(out.contains(shown), "missing {shown:?} in\n{out}");
+    }
+}
+
+#[test]
+fn every_graph_passes_locus_test() {
+    let o = locus(&["test", "graphs"]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains(" 0 failed"), "{}", stdout(&o));
+}
+
+#[test]
+fn json_breps_carry_their_faces_edges_and_vertices() {
+    let o = locus(&["run", "graphs/surface_singularity.ron", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    assert_eq!(
+        v["outputs"]["singular_points"]["{0;0}"][1],
+        serde_json::json!({"point": [0.0, 0.0, 2.0]})
+    );
+    // The exploded box's moved faces: six one-face B-reps, each a planar surface bounded by
+    // one outer loop of four edges between four vertices.
+    let o = locus(&["run", "graphs/exploded_box.ron", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    let faces = v["outputs"]["faces"]["{0;0}"]
+        .as_array()
+        .expect("a list of faces");
+    assert_eq!(faces.len(), 6);
+    for face in faces {
+        let brep = &face["brep"];
+        assert_eq!(brep["faces"].as_array().map(Vec::len), Some(1));
+        assert_eq!(
+            brep["faces"][0]["surface"]["degree"],
+            serde_json::json!([1, 1])
+        );
+        let loops = brep["faces"][0]["loops"].as_array().expect("loops");
+        assert_eq!(loops.len(), 1);
+        assert_eq!(loops[0]["outer"], serde_json::json!(true));
+        assert_eq!(loops[0]["edges"].as_array().map(Vec::len), Some(4));
+        assert_eq!(brep["edges"].as_array().map(Vec::len), Some(4));
+        assert_eq!(brep["vertices"].as_array().map(Vec::len), Some(4));
+    }
+}
