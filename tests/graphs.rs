@@ -128,3 +128,34 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
         failures.join("\n")
     );
 }
+
+#[test]
+fn the_example_of_the_graph_format_doc_runs_and_meets_its_expectations() {
+    let doc =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/graph-format.md"))
+            .expect("docs/graph-format.md is readable");
+    let start = doc.find("```ron\n").expect("a ron block") + "```ron\n".len();
+    let text = &doc[start..start + doc[start..].find("```").expect("the block ends")];
+    let registry = registry();
+    let document = Document::parse(text).expect("the example reads");
+    let checked = document.check(&registry).expect("the example checks");
+    assert!(checked.warnings.is_empty(), "{:?}", checked.warnings);
+    let plan = checked.plan.clone();
+    let mut evaluator = Evaluator::new(checked.plan);
+    evaluator.evaluate();
+    assert!(evaluator.messages().next().is_none());
+    assert!(!document.graph().expected.is_empty());
+    for (output, literal) in &document.graph().expected {
+        let &(_, node, port) = plan
+            .outputs
+            .iter()
+            .find(|(n, _, _)| n == output)
+            .expect("a named output");
+        let want = literal
+            .parse(plan.nodes[node].node_type.outputs[port].data_type)
+            .expect("the expectation reads");
+        let got = evaluator.output(output).cloned().unwrap_or_default();
+        let diff = compare_trees(&got, &want, COMPARE_TOLERANCE, 5);
+        assert!(diff.is_empty(), "{output}: {diff:?}");
+    }
+}
