@@ -22,8 +22,8 @@ use locus_kernel::{
 };
 
 use crate::cast_geometry::{
-    arc_to_box, circle_plane, circle_to_box, curve_to_arc, curve_to_box, curve_to_circle,
-    curve_to_line, line_to_box, point_to_box, surface_to_box,
+    arc_to_box, brep_to_box, brep_to_surface, circle_plane, circle_to_box, curve_to_arc,
+    curve_to_box, curve_to_circle, curve_to_line, line_to_box, point_to_box, surface_to_box,
 };
 use crate::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
@@ -58,7 +58,7 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Plane, Point)
             | (Domain, Number)
             | (Point | Vector | Plane | Domain | Transform, Text)
-            | (Point | Line | Circle | Arc | Curve | Surface, Box)
+            | (Point | Line | Circle | Arc | Curve | Surface | Brep, Box)
             | (Line | Circle | Arc, Curve)
             | (Curve, Line | Circle | Arc)
             | (Line | Circle | Arc | Curve, Number)
@@ -67,6 +67,7 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Line, Vector)
             | (Box | Line | Circle | Arc | Curve | Surface | Brep, Text)
             | (Box | Surface, Brep)
+            | (Brep, Surface)
     )
 }
 
@@ -77,7 +78,8 @@ const MAX_SHOWN_VALUE_CHARS: usize = 40;
 ///
 /// The offending value is shown when the pair of types can be cast in general (so the value is
 /// what went wrong) and its text is short; otherwise the message names the types only, as in
-/// `invalid cast: Point → Number`.
+/// `invalid cast: Point → Number`. A B-rep cast to a surface is shown by what decides the cast,
+/// its face count: `invalid cast: Brep with 6 faces → Surface`.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub struct CastError {
     /// The type of the item.
@@ -102,7 +104,7 @@ impl CastError {
     /// in general and the value's text is short.
     pub fn for_value(value: &Value, to: DataType) -> Self {
         let from = value.data_type();
-        let shown = can_cast(from, to).then(|| show_value(value)).flatten();
+        let shown = can_cast(from, to).then(|| show_value(value, to)).flatten();
         Self {
             from,
             to,
@@ -111,8 +113,15 @@ impl CastError {
     }
 }
 
-fn show_value(value: &Value) -> Option<String> {
+fn show_value(value: &Value, to: DataType) -> Option<String> {
     let text = match value {
+        Value::Brep(b) if to == DataType::Surface => {
+            let n = b.faces().len();
+            format!("with {n} face{}", if n == 1 { "" } else { "s" })
+        }
+        // What fails a B-rep's other casts (no geometry, a number that is not finite) is not
+        // in its text.
+        Value::Brep(_) => return None,
         Value::Text(t) => {
             let mut s = String::with_capacity(t.len() + 2);
             write_quoted(&mut s, t);
@@ -323,6 +332,8 @@ cast_table! {
     Arc(ArcCurve) => Box(OrientedBox) = arc_to_box;
     Curve(Shared<Curve>) => Box(OrientedBox) = curve_to_box;
     Surface(Shared<NurbsSurface>) => Box(OrientedBox) = surface_to_box;
+    Brep(Shared<Brep>) => Box(OrientedBox) = brep_to_box;
+    Brep(Shared<Brep>) => Surface(Shared<NurbsSurface>) = brep_to_surface;
     Line(Line) => Curve(Shared<Curve>) = |l: &Line| Some(Shared::new(Curve::from(*l)));
     Circle(Circle) => Curve(Shared<Curve>) = |c: &Circle| Some(Shared::new(Curve::from(*c)));
     Arc(ArcCurve) => Curve(Shared<Curve>) = |a: &ArcCurve| Some(Shared::new(Curve::from(*a)));
@@ -369,8 +380,51 @@ mod tests {
         ArcCurve::new(circle(), Interval::new(0.0, 1.0)).unwrap()
     }
 
+    fn unit_box() -> OrientedBox {
+        OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::UNIT,
+        )
+    }
+
+    /// A surface over `[0, 2] × [0, 1]` bulging up to z = 1 in the middle, from a control
+    /// row at z = 2 (so its control points' box is twice as tall as the surface).
+    fn bump() -> NurbsSurface {
+        let row = |x: f64, z: f64| vec![Point3::new(x, 0.0, z), Point3::new(x, 1.0, z)];
+        NurbsSurface::new(
+            2,
+            1,
+            vec![row(0.0, 0.0), row(1.0, 2.0), row(2.0, 0.0)],
+            vec![vec![1.0; 2]; 3],
+            vec![0.0, 0.0, 1.0, 1.0],
+            vec![0.0, 1.0],
+        )
+        .unwrap()
+    }
+
+    /// The corners of a world box, `[min, max]`, after checking it is on World XY.
+    fn world_corners(v: Value) -> [[f64; 3]; 2] {
+        let Value::Box(b) = v else {
+            panic!("not a box: {v:?}");
+        };
+        assert_eq!(b.plane, Plane::WORLD_XY);
+        [[b.x.t0, b.y.t0, b.z.t0], [b.x.t1, b.y.t1, b.z.t1]]
+    }
+
+    fn assert_corners(got: [[f64; 3]; 2], want: [[f64; 3]; 2]) {
+        for (g, w) in got.iter().flatten().zip(want.iter().flatten()) {
+            assert!((g - w).abs() < 1e-9, "{got:?} ≠ {want:?}");
+        }
+    }
+
     fn text(s: &str) -> Value {
         Value::Text(s.to_owned())
+    }
+
+    fn ok(v: Value, to: DataType) -> Value {
+        cast_value(&v, to).unwrap_or_else(|e| panic!("{v:?} → {to}: {e}"))
     }
 
     fn err(v: Value, to: DataType) -> String {
@@ -412,7 +466,11 @@ mod tests {
             DataType::Surface => vec![Value::Surface(Shared::new(
                 NurbsSurface::from_plane(&Plane::WORLD_XY, Interval::UNIT, Interval::UNIT).unwrap(),
             ))],
-            DataType::Brep => vec![Value::Brep(Shared::new(Brep::default()))],
+            DataType::Brep => vec![
+                Value::Brep(Shared::new(Brep::default())),
+                Value::Brep(Shared::new(Brep::from_surface(bump()).unwrap())),
+                Value::Brep(Shared::new(Brep::from_box(&unit_box()).unwrap())),
+            ],
             DataType::Generic => Vec::new(),
         }
     }
@@ -451,6 +509,102 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn one_face_breps_cast_to_their_surface() {
+        let sphere = locus_kernel::Sphere::new(Point3::new(1.0, 0.0, 0.0), 2.0).unwrap();
+        let brep = Value::Brep(Shared::new(Brep::from_sphere(&sphere).unwrap()));
+        assert_eq!(
+            ok(brep, DataType::Surface),
+            Value::Surface(Shared::new(sphere.to_nurbs().unwrap()))
+        );
+        // Surface → B-rep → Surface gives the same surface back.
+        let srf = Value::Surface(Shared::new(bump()));
+        assert_eq!(ok(ok(srf.clone(), DataType::Brep), DataType::Surface), srf);
+    }
+
+    #[test]
+    fn breps_with_several_faces_or_none_name_the_count() {
+        let six = Value::Brep(Shared::new(Brep::from_box(&unit_box()).unwrap()));
+        assert_eq!(
+            err(six, DataType::Surface),
+            "invalid cast: Brep with 6 faces → Surface"
+        );
+        assert_eq!(
+            err(Value::Brep(Shared::new(Brep::default())), DataType::Surface),
+            "invalid cast: Brep with 0 faces → Surface"
+        );
+    }
+
+    #[test]
+    fn brep_branches_cast_to_surfaces_item_by_item() {
+        let one = Shared::new(Brep::from_surface(bump()).unwrap());
+        let six = Shared::new(Brep::from_box(&unit_box()).unwrap());
+        let branch = Branch::from_parts(
+            <Shared<Brep> as Item>::into_column(vec![one.clone(), six, one]),
+            vec![false, false, true],
+        );
+        let (cast, errors) = cast_branch(&branch, DataType::Surface);
+        assert_eq!(cast.data_type(), DataType::Surface);
+        assert_eq!(
+            cast.values().collect::<Vec<_>>(),
+            [Some(Value::Surface(Shared::new(bump()))), None, None]
+        );
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert_eq!(errors[0].0, 1);
+        assert_eq!(
+            errors[0].1.to_string(),
+            "invalid cast: Brep with 6 faces → Surface"
+        );
+    }
+
+    #[test]
+    fn geometry_boxes_are_tight() {
+        // The surface peaks at z = 1; its control points reach z = 2.
+        let srf = Value::Surface(Shared::new(bump()));
+        assert_corners(
+            world_corners(ok(srf, DataType::Box)),
+            [[0.0, 0.0, 0.0], [2.0, 1.0, 1.0]],
+        );
+        let brep = Value::Brep(Shared::new(Brep::from_surface(bump()).unwrap()));
+        assert_corners(
+            world_corners(ok(brep, DataType::Box)),
+            [[0.0, 0.0, 0.0], [2.0, 1.0, 1.0]],
+        );
+        // A sphere's box touches it (its rational control net is the same box here), and a
+        // box turned 45° about z has the box of its corners.
+        let sphere = locus_kernel::Sphere::new(Point3::new(1.0, 2.0, 3.0), 0.5).unwrap();
+        let ball = Value::Brep(Shared::new(Brep::from_sphere(&sphere).unwrap()));
+        assert_corners(
+            world_corners(ok(ball, DataType::Box)),
+            [[0.5, 1.5, 2.5], [1.5, 2.5, 3.5]],
+        );
+        let turned = OrientedBox::new(
+            Plane::from_frame(
+                Point3::ORIGIN,
+                Vector3::new(1.0, 1.0, 0.0),
+                Vector3::new(-1.0, 1.0, 0.0),
+            )
+            .unwrap(),
+            Interval::new(-1.0, 1.0),
+            Interval::new(-1.0, 1.0),
+            Interval::new(0.0, 2.0),
+        );
+        let turned = Value::Brep(Shared::new(Brep::from_box(&turned).unwrap()));
+        let r = std::f64::consts::SQRT_2;
+        assert_corners(
+            world_corners(ok(turned, DataType::Box)),
+            [[-r, -r, 0.0], [r, r, 2.0]],
+        );
+    }
+
+    #[test]
+    fn empty_breps_have_no_box() {
+        assert_eq!(
+            err(Value::Brep(Shared::new(Brep::default())), DataType::Box),
+            "invalid cast: Brep → Box"
+        );
     }
 
     #[test]

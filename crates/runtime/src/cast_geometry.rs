@@ -1,11 +1,12 @@
-//! The conversions of the casting table between geometry types: world bounding boxes for Box
-//! inputs, lines, circles and arcs as curves and back, lengths, domains and planes of curves,
-//! and planes of circles, arcs and boxes. The rules are listed in `docs/casting.md`.
+//! The conversions of the casting table between geometry types: tight world bounding boxes for
+//! Box inputs, lines, circles and arcs as curves and back, lengths, domains and planes of
+//! curves, planes of circles, arcs and boxes, and the surface of a one-face B-rep. The rules
+//! are listed in `docs/casting.md`.
 
 use std::f64::consts::{PI, TAU};
 
 use locus_kernel::{
-    Arc, BoundingBox, Circle, Curve, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc, BoundingBox, Brep, Circle, Curve, Line, NurbsSurface, OrientedBox, Plane, Point3,
 };
 
 use crate::Shared;
@@ -83,22 +84,52 @@ pub(crate) fn arc_to_box(arc: &Arc) -> Option<OrientedBox> {
     world_box(arc_bounds(arc))
 }
 
-/// The world box of a curve: exact for lines, polylines, circles and arcs; for NURBS curves the
-/// box of the control points, which contains the curve (convex hull property) and touches it
-/// at clamped ends but is not tight in general.
+/// The tight world box of a curve: exact for lines, polylines, circles and arcs; for NURBS
+/// curves the kernel's tight box (ends and the points where a coordinate's derivative
+/// vanishes, to rounding), not the looser box of the control points.
 pub(crate) fn curve_to_box(curve: &Shared<Curve>) -> Option<OrientedBox> {
     match &**curve {
         Curve::Line { line, .. } => line_to_box(line),
         Curve::Polyline { polyline, .. } => points_box(polyline.points()),
         Curve::Circle { circle, .. } => circle_to_box(circle),
         Curve::Arc { arc, .. } => arc_to_box(arc),
-        Curve::Nurbs(nurbs) => points_box(nurbs.points()),
+        Curve::Nurbs(nurbs) if nurbs.is_finite() => world_box(nurbs.bounding_box()),
+        Curve::Nurbs(_) => None,
     }
 }
 
-/// The world box of a surface's control points, which contains the surface.
+/// The tight world box of a surface over its whole domain (Rhino's accurate
+/// `GetBoundingBox(true)`); a surface with a NaN or infinite number fails.
 pub(crate) fn surface_to_box(surface: &Shared<NurbsSurface>) -> Option<OrientedBox> {
-    points_box(surface.points())
+    if !surface.is_finite() {
+        return None;
+    }
+    world_box(surface.bounding_box())
+}
+
+/// The tight world box of a B-rep: its vertices, edges and the extremes of its faces inside
+/// their trims. An empty B-rep and one with a NaN or infinite number fail.
+pub(crate) fn brep_to_box(brep: &Shared<Brep>) -> Option<OrientedBox> {
+    if brep.faces().is_empty() && brep.edges().is_empty() && brep.vertices().is_empty() {
+        return None;
+    }
+    let finite = brep.vertices().iter().all(|v| v.point.is_finite())
+        && brep.faces().iter().all(|f| f.surface.is_finite())
+        && brep.edges().iter().all(|e| e.curve.is_finite());
+    if !finite {
+        return None;
+    }
+    world_box(brep.bounding_box())
+}
+
+/// The surface of a B-rep with exactly one face: the face's underlying surface, untrimmed
+/// (Rhino's `BrepFace.DuplicateSurface`, as Grasshopper casts a one-face B-rep to a surface).
+/// B-reps with no face or several fail.
+pub(crate) fn brep_to_surface(brep: &Shared<Brep>) -> Option<Shared<NurbsSurface>> {
+    match brep.faces() {
+        [face] => Some(Shared::new(face.surface.clone())),
+        _ => None,
+    }
 }
 
 /// The line inside a curve, if the curve is a line.
@@ -220,11 +251,11 @@ mod tests {
             vec![0.0, 0.0, 1.0, 1.0],
         )
         .unwrap();
-        // The control points' box contains the parabola (which peaks at y = 1).
+        // The box is tight: the parabola peaks at y = 1, its control points reach y = 2.
         assert_box(
             curve_to_box(&Shared::new(Curve::from(nurbs))),
             [0.0, 0.0, 0.0],
-            [2.0, 2.0, 0.0],
+            [2.0, 1.0, 0.0],
         );
     }
 
@@ -233,6 +264,34 @@ mod tests {
         assert!(point_to_box(&Point3::new(f64::NAN, 0.0, 0.0)).is_none());
         let line = Line::new(Point3::ORIGIN, Point3::new(f64::INFINITY, 0.0, 0.0));
         assert!(line_to_box(&line).is_none());
+    }
+
+    #[test]
+    fn breps_box_tight_and_unwrap_one_face() {
+        // A dome over [0, 2]²: the middle control point at z = 4 lifts the
+        // biquadratic surface to z = 1 at its centre only.
+        let points = (0..3)
+            .map(|i| {
+                (0..3)
+                    .map(|j| {
+                        let z = if (i, j) == (1, 1) { 4.0 } else { 0.0 };
+                        Point3::new(i as f64, j as f64, z)
+                    })
+                    .collect()
+            })
+            .collect();
+        let knots = vec![0.0, 0.0, 1.0, 1.0];
+        let surface =
+            NurbsSurface::new(2, 2, points, vec![vec![1.0; 3]; 3], knots.clone(), knots).unwrap();
+        let loose = surface.control_bounding_box();
+        assert_eq!(loose.max.z, 4.0);
+        let srf = Shared::new(surface.clone());
+        assert_box(surface_to_box(&srf), [0.0, 0.0, 0.0], [2.0, 2.0, 1.0]);
+        let brep = Shared::new(Brep::from_surface(surface.clone()).unwrap());
+        assert_box(brep_to_box(&brep), [0.0, 0.0, 0.0], [2.0, 2.0, 1.0]);
+        assert_eq!(brep_to_surface(&brep).as_deref(), Some(&surface));
+        assert!(brep_to_box(&Shared::new(Brep::default())).is_none());
+        assert!(brep_to_surface(&Shared::new(Brep::default())).is_none());
     }
 
     #[test]

@@ -133,7 +133,7 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
             tasks.iter().map(run_one).collect()
         }
     };
-    stitch(run.node_id, outputs.len(), segments)
+    stitch(run.node_id, outputs, segments)
 }
 
 /// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
@@ -217,7 +217,10 @@ fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<N
     })
 }
 
-fn stitch(node_id: &NodeId, n_outputs: usize, segments: Vec<Segment>) -> NodeOutput {
+/// Joins the segments' pieces into one tree per output. A generic output's branches whose
+/// items all have one type get a typed column, so that downstream nodes read typed slices.
+fn stitch(node_id: &NodeId, outputs: &[Port], segments: Vec<Segment>) -> NodeOutput {
+    let n_outputs = outputs.len();
     let mut pieces: Vec<Vec<(TreePath, Branch)>> = (0..n_outputs).map(|_| Vec::new()).collect();
     let mut messages = Vec::new();
     for segment in segments {
@@ -242,7 +245,18 @@ fn stitch(node_id: &NodeId, n_outputs: usize, segments: Vec<Segment>) -> NodeOut
         );
     }
     NodeOutput {
-        outputs: pieces.into_iter().map(DataTree::from_branches).collect(),
+        outputs: pieces
+            .into_iter()
+            .zip(outputs)
+            .map(|(p, port)| {
+                let tree = DataTree::from_branches(p);
+                if port.data_type == crate::DataType::Generic {
+                    tree.narrowed()
+                } else {
+                    tree
+                }
+            })
+            .collect(),
         messages,
     }
 }

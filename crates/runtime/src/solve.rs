@@ -290,6 +290,10 @@ impl<'a> Solve<'a> {
     }
 
     /// Sets an output item given as a [`Value`] (for generic outputs); `None` sets a null.
+    ///
+    /// A generic output collects values in a generic column; when the node has run, each of
+    /// its branches whose items all have one type becomes a typed column
+    /// ([`Branch::narrowed`](crate::Branch::narrowed)).
     pub fn set_value(&mut self, output: usize, value: Option<Value>) {
         let Some(sink) = self.sink(output) else {
             return;

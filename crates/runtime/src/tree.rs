@@ -186,6 +186,17 @@ impl Branch {
     pub fn values(&self) -> impl Iterator<Item = Option<Value>> + '_ {
         (0..self.len()).map(|i| self.value(i))
     }
+
+    /// The branch with a typed column when it is generic but its items (nulls aside) are all
+    /// of one type: the same items and nulls, stored contiguously. Other branches, and
+    /// generic ones of mixed items or only nulls, are returned as they are.
+    pub fn narrowed(self) -> Branch {
+        let items = self.items.narrowed(&self.nulls);
+        Branch {
+            items,
+            nulls: self.nulls,
+        }
+    }
 }
 
 /// A Grasshopper data tree: branches of items, each at a unique [`TreePath`], kept sorted by
@@ -332,6 +343,17 @@ impl DataTree {
         Self { branches: out }
     }
 
+    /// The tree with every branch [narrowed](Branch::narrowed).
+    pub fn narrowed(self) -> DataTree {
+        Self {
+            branches: self
+                .branches
+                .into_iter()
+                .map(|(path, branch)| (path, branch.narrowed()))
+                .collect(),
+        }
+    }
+
     /// The branches, consuming the tree.
     pub fn into_branches(self) -> Vec<(TreePath, Branch)> {
         self.branches
@@ -380,6 +402,28 @@ impl fmt::Display for DataTree {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn generic_branches_of_one_type_narrow_to_typed_columns() {
+        let mut b = Branch::new(DataType::Generic);
+        b.push_value(Value::Integer(4));
+        b.push_null();
+        b.push_value(Value::Integer(-1));
+        let values: Vec<Option<Value>> = b.values().collect();
+        let narrow = b.clone().narrowed();
+        assert_eq!(narrow.data_type(), DataType::Integer);
+        assert_eq!(narrow.slice::<i64>().map(<[i64]>::len), Some(3));
+        assert_eq!(narrow.null_mask(), [false, true, false]);
+        assert_eq!(narrow.values().collect::<Vec<_>>(), values);
+        // Mixed items, only nulls, and typed branches are left as they are.
+        b.push_value(Value::Number(1.0));
+        assert_eq!(b.clone().narrowed(), b);
+        let mut nulls = Branch::new(DataType::Generic);
+        nulls.push_null();
+        assert_eq!(nulls.clone().narrowed(), nulls);
+        let typed = Branch::from_items(vec![1.0, 2.0]);
+        assert_eq!(typed.clone().narrowed(), typed);
+    }
 
     #[test]
     fn branches_stay_sorted_and_unique() {

@@ -159,6 +159,40 @@ macro_rules! value_types {
                 }
             }
 
+            /// A generic column whose items (leaving out those `nulls` flags; an empty mask
+            /// flags none) are all of one type, as a typed column of that type with
+            /// placeholders at the nulls; any other column as it is.
+            pub fn narrowed(self, nulls: &[bool]) -> Column {
+                let Column::Generic(values) = self else {
+                    return self;
+                };
+                let is_null = |i: usize| !nulls.is_empty() && nulls.get(i).copied().unwrap_or(false);
+                let mut common = None;
+                for (i, v) in values.iter().enumerate() {
+                    if is_null(i) {
+                        continue;
+                    }
+                    match common {
+                        None => common = Some(v.data_type()),
+                        Some(t) if t == v.data_type() => {}
+                        Some(_) => return Column::Generic(values),
+                    }
+                }
+                match common {
+                    $( Some(DataType::$variant) => Column::$variant(
+                        values
+                            .into_iter()
+                            .enumerate()
+                            .map(|(i, v)| match v {
+                                Value::$variant(x) if !is_null(i) => x,
+                                _ => <$ty as Item>::placeholder(),
+                            })
+                            .collect(),
+                    ), )*
+                    Some(DataType::Generic) | None => Column::Generic(values),
+                }
+            }
+
             /// Converts the column to a generic column holding the same items.
             pub fn make_generic(&mut self) {
                 let generic = match std::mem::replace(self, Column::Generic(Vec::new())) {

@@ -453,6 +453,38 @@ fn breps_from_boxes_and_surfaces() {
 }
 
 #[test]
+fn tagged_breps_cast_to_surfaces_and_boxes_as_wires_do() {
+    // A one-face B-rep on a Surface port is its face's surface.
+    assert_eq!(
+        read(&format!("Brep{BILINEAR}"), DataType::Surface),
+        Value::Surface(Shared::new(bilinear()))
+    );
+    // A six-face one is an error naming the face count.
+    let cube = "Brep(plane: XY, x: (0, 1), y: (0, 2), z: (0, 3))";
+    assert_eq!(
+        fails(cube, DataType::Surface).0,
+        "invalid cast: Brep with 6 faces → Surface"
+    );
+    // On a Box port a B-rep or a surface becomes its world bounding box.
+    let world = |x: (f64, f64), y: (f64, f64), z: (f64, f64)| {
+        Value::Box(OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::new(x.0, x.1),
+            Interval::new(y.0, y.1),
+            Interval::new(z.0, z.1),
+        ))
+    };
+    assert_eq!(
+        read(cube, DataType::Box),
+        world((0.0, 1.0), (0.0, 2.0), (0.0, 3.0))
+    );
+    assert_eq!(
+        read(&format!("Surface{BILINEAR}"), DataType::Box),
+        world((0.0, 1.0), (0.0, 1.0), (0.0, 1.0))
+    );
+}
+
+#[test]
 fn generic_trees_of_geometry_round_trip() {
     let c = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
     let items = vec![

@@ -1,7 +1,9 @@
 //! Params › Geometry › Surface: a container of surfaces.
 
 use locus_kernel::NurbsSurface;
-use locus_runtime::{DataType, NodeRegistry, NodeType, Port, Shared, Value};
+use locus_runtime::{
+    DataType, NodeRegistry, NodeType, Port, Shared, Value, cast_branch, cast_value,
+};
 
 /// Id of [`surface`].
 pub const SURFACE: &str = "params.surface";
@@ -11,20 +13,14 @@ pub fn register(registry: &mut NodeRegistry) {
     registry.register(surface());
 }
 
-/// The surface a value stands for: a surface as it is, and a B-rep with exactly one face as
-/// that face's underlying (untrimmed) surface, as Rhino's `BrepFace.DuplicateSurface`; `None`
-/// for other values (and for B-reps with no face or several).
-///
-/// The runtime's cast table has no B-rep → Surface row yet, so a B-rep wired into a Surface
-/// input is an invalid cast before a node sees it; this function is what such a cast (or a
-/// node reading generic data) should use.
+/// The surface a value stands for, by the runtime's cast to Surface (`docs/casting.md`): a
+/// surface as it is, and a B-rep with exactly one face as that face's underlying (untrimmed)
+/// surface, as Rhino's `BrepFace.DuplicateSurface`; `None` for other values (and for B-reps
+/// with no face or several). For nodes reading generic data; a Surface input already holds
+/// cast items.
 pub fn surface_from_value(value: &Value) -> Option<Shared<NurbsSurface>> {
-    match value {
-        Value::Surface(s) => Some(s.clone()),
-        Value::Brep(b) => match b.faces() {
-            [face] => Some(Shared::new(face.surface.clone())),
-            _ => None,
-        },
+    match cast_value(value, DataType::Surface) {
+        Ok(Value::Surface(s)) => Some(s),
         _ => None,
     }
 }
@@ -36,14 +32,15 @@ pub fn surface() -> NodeType {
         .description(
             "Contains a collection of surfaces. A parameter passes its data through unchanged \
              (paths, empty branches and nulls included) after casting every item to its type; \
-             a graph uses it to declare a named input. NURBS surfaces pass as they are. Items \
-             that do not cast are errors and become null; B-reps are not cast to surfaces \
-             (take a B-rep's faces with Deconstruct Brep). The reparameterize modifier on its input gives every surface the domain 0 to 1 in u \
-             and v.",
+             a graph uses it to declare a named input. NURBS surfaces pass as they are; a \
+             B-rep with exactly one face becomes that face's untrimmed surface. Items that do \
+             not cast are errors and become null, B-reps with several faces among them (take \
+             a B-rep's faces with Deconstruct Brep). The reparameterize modifier on its input \
+             gives every surface the domain 0 to 1 in u and v.",
         )
         .input(Port::new("Surface", "Srf", DataType::Surface).list().doc(
-            "The surfaces, wired in. No default; a \
-             parameter without data warns that it failed to collect data.",
+            "The surfaces, wired in: surfaces, or one-face B-reps. No default; a parameter \
+             without data warns that it failed to collect data.",
         ))
         .output(
             Port::new("Surface", "Srf", DataType::Surface)
@@ -54,27 +51,14 @@ pub fn surface() -> NodeType {
             let Some(branch) = s.branch(0) else {
                 return Ok(());
             };
-            if branch.data_type() == DataType::Surface || branch.is_empty() {
-                let branch = branch.clone();
-                s.set_branch(0, branch);
-                return Ok(());
+            // The runtime casts inputs to the port's type, so this is a copy; it casts a branch
+            // given to the node directly, without that cast.
+            let (cast, errors) = cast_branch(branch, DataType::Surface);
+            let cast = cast.into_owned();
+            for (i, e) in errors {
+                s.error(format!("{e} (item {i})"));
             }
-            // The runtime casts inputs to the port's type; this covers a branch given to the
-            // node directly, without that cast.
-            let mut out = Vec::with_capacity(branch.len());
-            for (i, value) in branch.values().enumerate() {
-                match value {
-                    None => out.push(None),
-                    Some(v) => match surface_from_value(&v) {
-                        Some(srf) => out.push(Some(Value::Surface(srf))),
-                        None => {
-                            s.error(format!("invalid cast: {} → Surface (item {i})", v.data_type()));
-                            out.push(None);
-                        }
-                    },
-                }
-            }
-            s.set_list_values(0, out);
+            s.set_branch(0, cast);
             Ok(())
         })
 }
@@ -117,6 +101,33 @@ mod tests {
         assert_eq!(*s, sphere.to_nurbs().unwrap());
         assert!(surface_from_value(&six_faces).is_none());
         assert!(surface_from_value(&Value::Number(1.0)).is_none());
+    }
+
+    #[test]
+    fn one_face_breps_become_surfaces_and_others_are_errors() {
+        let one_face = Shared::new(Brep::from_surface((*square()).clone()).unwrap());
+        let bx = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::UNIT,
+        );
+        let six_faces = Shared::new(Brep::from_box(&bx).unwrap());
+        let r = NodeCall::new(&surface())
+            .input(DataTree::from_list(vec![one_face, six_faces]))
+            .run();
+        let out: Vec<Option<Value>> = r.outputs[0].values().collect();
+        assert_eq!(out, vec![Some(Value::Surface(square())), None]);
+        let errors: Vec<&str> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .map(|m| m.text.as_str())
+            .collect();
+        assert_eq!(
+            errors,
+            ["input Srf: invalid cast: Brep with 6 faces → Surface"]
+        );
     }
 
     #[test]
