@@ -262,14 +262,13 @@ fn expected_values_are_rewritten_in_place() {
     );
 }
 
+/// The example of docs/graph-format.md uses the node library's types, which the runtime does not
+/// know: the root package's tests/graphs.rs checks and runs it; here it must be canonical.
 #[test]
-fn the_documented_example_is_canonical_and_checks() {
+fn the_documented_example_is_canonical() {
     let doc = include_str!("../../../docs/graph-format.md");
     let start = doc.find("```ron\n").unwrap() + "```ron\n".len();
     let example = &doc[start..start + doc[start..].find("```").unwrap()];
-    let registry = common::registry();
-    let checked = check_text(example, &registry).unwrap_or_else(|e| panic!("{:?}", messages(&e)));
-    assert!(checked.warnings.is_empty());
     // Saving drops the leading comment and nothing else.
     let without_comment = example.split_once('\n').unwrap().1;
     assert_eq!(Graph::from_ron(example).unwrap().to_ron(), without_comment);
