@@ -47,12 +47,7 @@ fn gate(
         .input(Port::new("A", "A", DataType::Boolean).doc("The first (left-hand) boolean."))
         .input(Port::new("B", "B", DataType::Boolean).doc("The second (right-hand) boolean."))
         .output(Port::new("Result", "R", DataType::Boolean).doc("The result of the gate."))
-        .solve(move |s| {
-            let a = *s.item::<bool>(0)?;
-            let b = *s.item::<bool>(1)?;
-            s.set(0, f(a, b));
-            Ok(())
-        })
+        .lift2(move |a: &bool, b: &bool| Ok(f(*a, *b)))
 }
 
 /// Gate And \[And\]: true when both A and B are true.
@@ -128,11 +123,7 @@ pub fn gate_not() -> NodeType {
         .description("Boolean negation (NOT gate): true when A is false.")
         .input(Port::new("A", "A", DataType::Boolean).doc("The boolean to invert."))
         .output(Port::new("Result", "R", DataType::Boolean).doc("The inverse of A."))
-        .solve(|s| {
-            let a = *s.item::<bool>(0)?;
-            s.set(0, !a);
-            Ok(())
-        })
+        .lift1(|a: &bool| Ok(!a))
 }
 
 #[cfg(test)]

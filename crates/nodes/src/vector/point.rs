@@ -54,12 +54,11 @@ pub fn construct_point() -> NodeType {
                 .default_value(0.0),
         )
         .output(Port::new("Point", "Pt", DataType::Point).doc("The point (X, Y, Z)."))
-        .solve(|s| {
-            let x = finite_number(*s.item::<f64>(0)?, "coordinate X")?;
-            let y = finite_number(*s.item::<f64>(1)?, "coordinate Y")?;
-            let z = finite_number(*s.item::<f64>(2)?, "coordinate Z")?;
-            s.set(0, Point3::new(x, y, z));
-            Ok(())
+        .lift3(|x: &f64, y: &f64, z: &f64| {
+            let x = finite_number(*x, "coordinate X")?;
+            let y = finite_number(*y, "coordinate Y")?;
+            let z = finite_number(*z, "coordinate Z")?;
+            Ok(Point3::new(x, y, z))
         })
 }
 
@@ -106,11 +105,10 @@ pub fn distance() -> NodeType {
             Port::new("Distance", "D", DataType::Number)
                 .doc("The distance from A to B, in model units; never negative."),
         )
-        .solve(|s| {
-            let a = finite_point(*s.item::<Point3>(0)?, "point A")?;
-            let b = finite_point(*s.item::<Point3>(1)?, "point B")?;
-            s.set(0, a.distance(b));
-            Ok(())
+        .lift2(|a: &Point3, b: &Point3| {
+            let a = finite_point(*a, "point A")?;
+            let b = finite_point(*b, "point B")?;
+            Ok(a.distance(b))
         })
 }
 
@@ -134,12 +132,11 @@ pub fn point_between() -> NodeType {
                 .default_value(0.5),
         )
         .output(Port::new("Point", "P", DataType::Point).doc("The point A + t (B − A)."))
-        .solve(|s| {
-            let a = finite_point(*s.item::<Point3>(0)?, "point A")?;
-            let b = finite_point(*s.item::<Point3>(1)?, "point B")?;
-            let t = finite_number(*s.item::<f64>(2)?, "parameter t")?;
-            s.set(0, finite_point(a + (b - a) * t, "the point")?);
-            Ok(())
+        .lift3(|a: &Point3, b: &Point3, t: &f64| {
+            let a = finite_point(*a, "point A")?;
+            let b = finite_point(*b, "point B")?;
+            let t = finite_number(*t, "parameter t")?;
+            finite_point(a + (b - a) * t, "the point")
         })
 }
 
