@@ -1,6 +1,7 @@
 //! Maths › Operators: logic gates on booleans.
 //!
-//! Inputs are booleans; numbers are cast on the way in (0 is false, anything else true).
+//! Inputs are booleans; numbers are cast on the way in (0 is false, anything else true). The
+//! gates are lifted item functions (`lift1`/`lift2`): one loop over the boolean columns.
 
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 

@@ -248,6 +248,42 @@ mod tests {
     }
 
     #[test]
+    fn distance_over_a_list_reports_each_failing_item() {
+        // Distance is a lifted item function: a failing item is a null with an error that
+        // names its path and index, a null item stays null without one, and the shorter input
+        // repeats its last item (longest list).
+        let mut a = locus_runtime::Branch::new(DataType::Point);
+        a.push(Point3::new(3.0, 4.0, 0.0));
+        a.push(Point3::new(f64::NAN, 0.0, 0.0));
+        a.push_null();
+        a.push(Point3::new(0.0, 0.0, 2.0));
+        let path = locus_runtime::TreePath::zero();
+        let r = NodeCall::new(&distance())
+            .input(DataTree::from_branches([(path.clone(), a)]))
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .run();
+        assert_eq!(
+            items::<f64>(&r.outputs[0]),
+            [Some(5.0), None, None, Some(2.0)]
+        );
+        let errors: Vec<_> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .collect();
+        assert_eq!(errors.len(), 1, "{:?}", r.messages);
+        assert_eq!(
+            (errors[0].path.as_ref(), errors[0].index),
+            (Some(&path), Some(1))
+        );
+        assert_eq!(
+            errors[0].text,
+            "point A has a coordinate that is not finite"
+        );
+        assert_eq!(r.messages.len(), 1);
+    }
+
+    #[test]
     fn point_between_follows_the_book() {
         // The book's midpoint M = Q + 0.5 (P − Q).
         let q = Point3::new(1.0, 2.0, 3.0);
