@@ -4,7 +4,7 @@
 use locus_kernel::{Circle, Continuity, Curve, Interval, Plane, Point3, continuity};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve};
 
-use super::{curve_input, finite_parameter};
+use super::{curve_input, finite_parameter, valid_curve};
 
 /// Id of [`control_points`].
 pub const CONTROL_POINTS: &str = "curve.control_points";
@@ -241,10 +241,9 @@ pub fn length() -> NodeType {
         )
         .input(curve_port("Curve to measure."))
         .output(Port::new("Length", "L", DataType::Number).doc("Curve length, in model units."))
-        .solve(|s| {
-            let curve = curve_input(s, 0)?;
-            s.set(0, curve.length());
-            Ok(())
+        .lift1(|curve: &Shared<Curve>| {
+            valid_curve(curve, "C")?;
+            Ok(curve.length())
         })
 }
 

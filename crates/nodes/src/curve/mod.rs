@@ -69,11 +69,20 @@ pub(crate) fn curve_input(s: &Solve<'_>, input: usize) -> Result<Shared<Curve>, 
             })?
         }
     };
-    // NURBS curves are valid by construction; the other kinds carry raw fields.
-    if !matches!(*curve, Curve::Nurbs(_)) && !curve.is_valid() {
-        return Err(format!("input {}: the curve is not valid", input_name(s, input)).into());
-    }
+    valid_curve(&curve, &input_name(s, input))?;
     Ok(curve)
+}
+
+/// Checks that a curve arriving on the input named `input` is valid, as [`curve_input`] does.
+///
+/// # Errors
+/// When it is a line, circle, arc or polyline that is not valid (non-finite, zero radius).
+pub(crate) fn valid_curve(curve: &Curve, input: &str) -> Result<(), NodeError> {
+    // NURBS curves are valid by construction; the other kinds carry raw fields.
+    if !matches!(curve, Curve::Nurbs(_)) && !curve.is_valid() {
+        return Err(format!("input {input}: the curve is not valid").into());
+    }
+    Ok(())
 }
 
 /// The points of list input `input`, nulls left out (with a warning).

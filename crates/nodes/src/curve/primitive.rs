@@ -33,17 +33,14 @@ pub fn line() -> NodeType {
         .input(Port::new("Start Point", "A", DataType::Point).doc("Line start point."))
         .input(Port::new("End Point", "B", DataType::Point).doc("Line end point."))
         .output(Port::new("Line", "L", DataType::Line).doc("The line segment from A to B."))
-        .solve(|s| {
-            let a: Point3 = *s.item(0)?;
-            let b: Point3 = *s.item(1)?;
+        .lift2(|a: &Point3, b: &Point3| {
             if !a.is_finite() || !b.is_finite() {
                 return Err("line end points must be finite".into());
             }
             if a == b {
                 return Err("start and end points coincide: the line has no length".into());
             }
-            s.set(0, Line::new(a, b));
-            Ok(())
+            Ok(Line::new(*a, *b))
         })
 }
 
@@ -65,12 +62,7 @@ pub fn circle() -> NodeType {
                 .default_value(1.0),
         )
         .output(Port::new("Circle", "C", DataType::Circle).doc("The circle."))
-        .solve(|s| {
-            let plane: Plane = *s.item(0)?;
-            let radius: f64 = *s.item(1)?;
-            s.set(0, Circle::new(plane, radius)?);
-            Ok(())
-        })
+        .lift2(|plane: &Plane, radius: &f64| Ok(Circle::new(*plane, *radius)?))
 }
 
 /// Arc \[Arc\]: an arc from a plane, a radius and an angle domain.

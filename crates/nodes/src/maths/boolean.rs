@@ -1,6 +1,7 @@
 //! Maths › Operators: logic gates on booleans.
 //!
-//! Inputs are booleans; numbers are cast on the way in (0 is false, anything else true).
+//! Inputs are booleans; numbers are cast on the way in (0 is false, anything else true). The
+//! gates are lifted item functions (`lift1`/`lift2`): one loop over the boolean columns.
 
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 
@@ -47,12 +48,7 @@ fn gate(
         .input(Port::new("A", "A", DataType::Boolean).doc("The first (left-hand) boolean."))
         .input(Port::new("B", "B", DataType::Boolean).doc("The second (right-hand) boolean."))
         .output(Port::new("Result", "R", DataType::Boolean).doc("The result of the gate."))
-        .solve(move |s| {
-            let a = *s.item::<bool>(0)?;
-            let b = *s.item::<bool>(1)?;
-            s.set(0, f(a, b));
-            Ok(())
-        })
+        .lift2(move |a: &bool, b: &bool| Ok(f(*a, *b)))
 }
 
 /// Gate And \[And\]: true when both A and B are true.
@@ -128,11 +124,7 @@ pub fn gate_not() -> NodeType {
         .description("Boolean negation (NOT gate): true when A is false.")
         .input(Port::new("A", "A", DataType::Boolean).doc("The boolean to invert."))
         .output(Port::new("Result", "R", DataType::Boolean).doc("The inverse of A."))
-        .solve(|s| {
-            let a = *s.item::<bool>(0)?;
-            s.set(0, !a);
-            Ok(())
-        })
+        .lift1(|a: &bool| Ok(!a))
 }
 
 #[cfg(test)]

@@ -100,12 +100,11 @@ pub fn sphere() -> NodeType {
             Port::new("Sphere", "S", DataType::Surface)
                 .doc("The sphere, a NURBS surface with domain 0 to 2π × −π/2 to π/2."),
         )
-        .solve(|s| {
-            let plane = valid_plane(s.item::<Plane>(0)?, "B")?;
-            let r = positive_radius(*s.item::<f64>(1)?)?;
+        .lift2(|plane: &Plane, r: &f64| {
+            let plane = valid_plane(plane, "B")?;
+            let r = positive_radius(*r)?;
             let sphere = Sphere::from_plane(plane, r)?;
-            s.set(0, Shared::new(sphere.to_nurbs()?));
-            Ok(())
+            Ok(Shared::new(sphere.to_nurbs()?))
         })
 }
 
@@ -135,13 +134,12 @@ pub fn cylinder() -> NodeType {
             Port::new("Cylinder", "C", DataType::Surface)
                 .doc("The lateral surface of the cylinder, a NURBS surface."),
         )
-        .solve(|s| {
-            let plane = valid_plane(s.item::<Plane>(0)?, "B")?;
-            let r = positive_radius(*s.item::<f64>(1)?)?;
-            let l = nonzero_length(*s.item::<f64>(2)?)?;
+        .lift3(|plane: &Plane, r: &f64, l: &f64| {
+            let plane = valid_plane(plane, "B")?;
+            let r = positive_radius(*r)?;
+            let l = nonzero_length(*l)?;
             let cylinder = Cylinder::new(plane, r, l)?;
-            s.set(0, Shared::new(cylinder.to_nurbs()?));
-            Ok(())
+            Ok(Shared::new(cylinder.to_nurbs()?))
         })
 }
 
@@ -223,12 +221,11 @@ pub fn plane_surface() -> NodeType {
             Port::new("Plane", "P", DataType::Surface)
                 .doc("The planar surface, with the X and Y domains as its u and v domains."),
         )
-        .solve(|s| {
-            let plane = valid_plane(s.item::<Plane>(0)?, "P")?;
-            let x = extent(*s.item::<Interval>(1)?, "X")?;
-            let y = extent(*s.item::<Interval>(2)?, "Y")?;
-            s.set(0, Shared::new(NurbsSurface::from_plane(&plane, x, y)?));
-            Ok(())
+        .lift3(|plane: &Plane, x: &Interval, y: &Interval| {
+            let plane = valid_plane(plane, "P")?;
+            let x = extent(*x, "X")?;
+            let y = extent(*y, "Y")?;
+            Ok(Shared::new(NurbsSurface::from_plane(&plane, x, y)?))
         })
 }
 

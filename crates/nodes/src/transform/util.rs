@@ -112,11 +112,7 @@ pub fn inverse_transform() -> NodeType {
         )
         .input(Port::new("Transform", "T", DataType::Transform).doc("The transformation."))
         .output(Port::new("Transform", "T", DataType::Transform).doc("Its inverse."))
-        .solve(|s| {
-            let t = *s.item::<Transform>(0)?;
-            s.set(0, t.inverse()?);
-            Ok(())
-        })
+        .lift1(|t: &Transform| Ok(t.inverse()?))
 }
 
 /// Deconstruct Transform \[DeXform\]: the sixteen entries of a matrix, row by row.

@@ -6,6 +6,12 @@
 //! collinear points where a plane is needed give an error on the node for that item, and a null
 //! in its outputs.
 //!
+//! Nodes with one output that are plain functions of their items (Construct Point, Distance,
+//! Point Between, Unit X/Y/Z, Unit Vector, Amplitude, Vector Length, Reverse, Rotate, Dot
+//! Product, Construct Plane, Plane 3Pt, Plane Normal, XY/YZ/XZ Plane) are declared with the
+//! runtime's `lift1`/`lift2`/`lift3`, which runs them as one loop over the typed columns (see
+//! the crate docs, `# Performance`); the others read their items through `Solve`.
+//!
 //! Vector addition, subtraction and scaling by a number have no nodes of their own here, as in
 //! Grasshopper: Maths › Addition, Subtraction and Multiplication take vectors and points, and
 //! [Amplitude](vectors::amplitude) sets a vector's length.

@@ -86,13 +86,7 @@ pub fn construct_plane() -> NodeType {
                 .default_value(Vector3::Y),
         )
         .output(Port::new("Plane", "Pl", DataType::Plane).doc("The plane."))
-        .solve(|s| {
-            let o = *s.item::<Point3>(0)?;
-            let x = *s.item::<Vector3>(1)?;
-            let y = *s.item::<Vector3>(2)?;
-            s.set(0, Plane::from_frame(o, x, y)?);
-            Ok(())
-        })
+        .lift3(|o: &Point3, x: &Vector3, y: &Vector3| Ok(Plane::from_frame(*o, *x, *y)?))
 }
 
 /// Plane 3Pt \[Pl 3Pt\]: the plane through three points.
@@ -110,13 +104,7 @@ pub fn plane_3pt() -> NodeType {
                 .doc("A point on the positive y side of the plane."),
         )
         .output(Port::new("Plane", "Pl", DataType::Plane).doc("The plane through A, B and C."))
-        .solve(|s| {
-            let a = *s.item::<Point3>(0)?;
-            let b = *s.item::<Point3>(1)?;
-            let c = *s.item::<Point3>(2)?;
-            s.set(0, Plane::from_points(a, b, c)?);
-            Ok(())
-        })
+        .lift3(|a: &Point3, b: &Point3, c: &Point3| Ok(Plane::from_points(*a, *b, *c)?))
 }
 
 /// Plane Normal \[Pl\]: the plane through a point with a given normal.
@@ -138,12 +126,7 @@ pub fn plane_normal() -> NodeType {
                 .default_value(Vector3::Z),
         )
         .output(Port::new("Plane", "P", DataType::Plane).doc("The plane."))
-        .solve(|s| {
-            let o = *s.item::<Point3>(0)?;
-            let z = *s.item::<Vector3>(1)?;
-            s.set(0, Plane::from_normal(o, z)?);
-            Ok(())
-        })
+        .lift2(|o: &Point3, z: &Vector3| Ok(Plane::from_normal(*o, *z)?))
 }
 
 fn world_plane(id: &str, name: &str, nickname: &str, plane: Plane, axes: &str) -> NodeType {
@@ -157,10 +140,9 @@ fn world_plane(id: &str, name: &str, nickname: &str, plane: Plane, axes: &str) -
                 .default_value(Point3::ORIGIN),
         )
         .output(Port::new("Plane", "P", DataType::Plane).doc(&format!("The {name}.")))
-        .solve(move |s| {
-            let o = finite_point(*s.item::<Point3>(0)?, "origin O")?;
-            s.set(0, Plane { origin: o, ..plane });
-            Ok(())
+        .lift1(move |o: &Point3| {
+            let o = finite_point(*o, "origin O")?;
+            Ok(Plane { origin: o, ..plane })
         })
 }
 

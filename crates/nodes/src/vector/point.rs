@@ -54,12 +54,11 @@ pub fn construct_point() -> NodeType {
                 .default_value(0.0),
         )
         .output(Port::new("Point", "Pt", DataType::Point).doc("The point (X, Y, Z)."))
-        .solve(|s| {
-            let x = finite_number(*s.item::<f64>(0)?, "coordinate X")?;
-            let y = finite_number(*s.item::<f64>(1)?, "coordinate Y")?;
-            let z = finite_number(*s.item::<f64>(2)?, "coordinate Z")?;
-            s.set(0, Point3::new(x, y, z));
-            Ok(())
+        .lift3(|x: &f64, y: &f64, z: &f64| {
+            let x = finite_number(*x, "coordinate X")?;
+            let y = finite_number(*y, "coordinate Y")?;
+            let z = finite_number(*z, "coordinate Z")?;
+            Ok(Point3::new(x, y, z))
         })
 }
 
@@ -106,11 +105,10 @@ pub fn distance() -> NodeType {
             Port::new("Distance", "D", DataType::Number)
                 .doc("The distance from A to B, in model units; never negative."),
         )
-        .solve(|s| {
-            let a = finite_point(*s.item::<Point3>(0)?, "point A")?;
-            let b = finite_point(*s.item::<Point3>(1)?, "point B")?;
-            s.set(0, a.distance(b));
-            Ok(())
+        .lift2(|a: &Point3, b: &Point3| {
+            let a = finite_point(*a, "point A")?;
+            let b = finite_point(*b, "point B")?;
+            Ok(a.distance(b))
         })
 }
 
@@ -134,12 +132,11 @@ pub fn point_between() -> NodeType {
                 .default_value(0.5),
         )
         .output(Port::new("Point", "P", DataType::Point).doc("The point A + t (B − A)."))
-        .solve(|s| {
-            let a = finite_point(*s.item::<Point3>(0)?, "point A")?;
-            let b = finite_point(*s.item::<Point3>(1)?, "point B")?;
-            let t = finite_number(*s.item::<f64>(2)?, "parameter t")?;
-            s.set(0, finite_point(a + (b - a) * t, "the point")?);
-            Ok(())
+        .lift3(|a: &Point3, b: &Point3, t: &f64| {
+            let a = finite_point(*a, "point A")?;
+            let b = finite_point(*b, "point B")?;
+            let t = finite_number(*t, "parameter t")?;
+            finite_point(a + (b - a) * t, "the point")
         })
 }
 
@@ -248,6 +245,42 @@ mod tests {
             .run();
         assert_error(&r, "point A");
         assert!(is_null(&r, 0));
+    }
+
+    #[test]
+    fn distance_over_a_list_reports_each_failing_item() {
+        // Distance is a lifted item function: a failing item is a null with an error that
+        // names its path and index, a null item stays null without one, and the shorter input
+        // repeats its last item (longest list).
+        let mut a = locus_runtime::Branch::new(DataType::Point);
+        a.push(Point3::new(3.0, 4.0, 0.0));
+        a.push(Point3::new(f64::NAN, 0.0, 0.0));
+        a.push_null();
+        a.push(Point3::new(0.0, 0.0, 2.0));
+        let path = locus_runtime::TreePath::zero();
+        let r = NodeCall::new(&distance())
+            .input(DataTree::from_branches([(path.clone(), a)]))
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .run();
+        assert_eq!(
+            items::<f64>(&r.outputs[0]),
+            [Some(5.0), None, None, Some(2.0)]
+        );
+        let errors: Vec<_> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .collect();
+        assert_eq!(errors.len(), 1, "{:?}", r.messages);
+        assert_eq!(
+            (errors[0].path.as_ref(), errors[0].index),
+            (Some(&path), Some(1))
+        );
+        assert_eq!(
+            errors[0].text,
+            "point A has a coordinate that is not finite"
+        );
+        assert_eq!(r.messages.len(), 1);
     }
 
     #[test]

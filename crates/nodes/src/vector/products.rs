@@ -43,16 +43,14 @@ pub fn dot_product() -> NodeType {
             Port::new("Dot product", "D", DataType::Number)
                 .doc("A · B, in square model units (unitless when unitized)."),
         )
-        .solve(|s| {
-            let a = finite_vector(*s.item::<Vector3>(0)?, "vector A")?;
-            let b = finite_vector(*s.item::<Vector3>(1)?, "vector B")?;
-            let d = if *s.item::<bool>(2)? {
+        .lift3(|a: &Vector3, b: &Vector3, unitize: &bool| {
+            let a = finite_vector(*a, "vector A")?;
+            let b = finite_vector(*b, "vector B")?;
+            Ok(if *unitize {
                 unit(a, "vector A")?.dot(unit(b, "vector B")?)
             } else {
                 a.dot(b)
-            };
-            s.set(0, d);
-            Ok(())
+            })
         })
 }
 

@@ -129,11 +129,7 @@ fn unit_axis(id: &str, name: &str, nickname: &str, axis: Vector3, letter: &str) 
             Port::new("Unit vector", "V", DataType::Vector)
                 .doc(&format!("The {letter} axis scaled by the factor.")),
         )
-        .solve(move |s| {
-            let f = finite_number(*s.item::<f64>(0)?, "factor F")?;
-            s.set(0, axis * f);
-            Ok(())
-        })
+        .lift1(move |f: &f64| Ok(axis * finite_number(*f, "factor F")?))
 }
 
 /// Unit X \[X\]: the world x axis times a factor.
@@ -204,11 +200,7 @@ pub fn unit_vector() -> NodeType {
             Port::new("Unit vector", "V", DataType::Vector)
                 .doc("The vector of length one in the direction of V."),
         )
-        .solve(|s| {
-            let v = *s.item::<Vector3>(0)?;
-            s.set(0, unit(v, "vector V")?);
-            Ok(())
-        })
+        .lift1(|v: &Vector3| unit(*v, "vector V"))
 }
 
 /// Amplitude \[Amp\]: a vector with its length set.
@@ -229,11 +221,9 @@ pub fn amplitude() -> NodeType {
             Port::new("Vector", "V", DataType::Vector)
                 .doc("The vector of length |A| along V (against V when A < 0)."),
         )
-        .solve(|s| {
-            let v = *s.item::<Vector3>(0)?;
-            let a = finite_number(*s.item::<f64>(1)?, "amplitude A")?;
-            s.set(0, unit(v, "vector V")? * a);
-            Ok(())
+        .lift2(|v: &Vector3, a: &f64| {
+            let a = finite_number(*a, "amplitude A")?;
+            Ok(unit(*v, "vector V")? * a)
         })
 }
 
@@ -246,11 +236,7 @@ pub fn vector_length() -> NodeType {
             Port::new("Length", "L", DataType::Number)
                 .doc("The length of the vector, in model units; never negative."),
         )
-        .solve(|s| {
-            let v = finite_vector(*s.item::<Vector3>(0)?, "vector V")?;
-            s.set(0, v.length());
-            Ok(())
-        })
+        .lift1(|v: &Vector3| Ok(finite_vector(*v, "vector V")?.length()))
 }
 
 /// Reverse \[Rev\]: the vector pointing the other way.
@@ -259,11 +245,7 @@ pub fn reverse() -> NodeType {
         .description("Reverses a vector: −v, the same length in the opposite direction.")
         .input(Port::new("Vector", "V", DataType::Vector).doc("The vector to reverse."))
         .output(Port::new("Vector", "V", DataType::Vector).doc("The reversed vector, −V."))
-        .solve(|s| {
-            let v = finite_vector(*s.item::<Vector3>(0)?, "vector V")?;
-            s.set(0, -v);
-            Ok(())
-        })
+        .lift1(|v: &Vector3| Ok(-finite_vector(*v, "vector V")?))
 }
 
 /// Rotate \[VRot\]: a vector rotated about an axis.
@@ -286,12 +268,10 @@ pub fn rotate() -> NodeType {
                 .default_value(FRAC_PI_2),
         )
         .output(Port::new("Vector", "V", DataType::Vector).doc("The rotated vector."))
-        .solve(|s| {
-            let v = finite_vector(*s.item::<Vector3>(0)?, "vector V")?;
-            let axis = *s.item::<Vector3>(1)?;
-            let angle = finite_number(*s.item::<f64>(2)?, "angle A")?;
-            s.set(0, v.rotated(angle, axis)?);
-            Ok(())
+        .lift3(|v: &Vector3, axis: &Vector3, angle: &f64| {
+            let v = finite_vector(*v, "vector V")?;
+            let angle = finite_number(*angle, "angle A")?;
+            Ok(v.rotated(angle, *axis)?)
         })
 }
 
