@@ -139,17 +139,34 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
 /// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
 /// ports and data fit the loop (see `lift`); `None` to take the general path.
 fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<NodeOutput> {
-    let lift = run.node_type.lift.as_ref()?;
+    let node_type = run.node_type;
+    node_type
+        .lift
+        .iter()
+        .chain(&node_type.fast_paths)
+        .find_map(|lift| run_lift(run, lift, data, parallel))
+}
+
+/// Runs one lifted loop (the node's own or a fast path) when the ports and the data fit it.
+fn run_lift(
+    run: &NodeRun<'_>,
+    lift: &crate::lift::Lift,
+    data: &[&DataTree],
+    parallel: bool,
+) -> Option<NodeOutput> {
     let outputs = &run.node_type.outputs;
+    // A port takes the loop's type when it has that type or is generic (a fast path).
+    let takes =
+        |port: crate::DataType, t: crate::DataType| port == t || port == crate::DataType::Generic;
     let fits = run.inputs.len() == lift.inputs.len()
         && run
             .inputs
             .iter()
             .zip(&lift.inputs)
-            .all(|(p, &t)| p.access == Access::Item && !p.optional && p.data_type == t)
+            .all(|(p, &t)| p.access == Access::Item && !p.optional && takes(p.data_type, t))
         && outputs.len() == 1
         && outputs[0].access == Access::Item
-        && outputs[0].data_type == lift.output
+        && takes(outputs[0].data_type, lift.output)
         && run.matching != Matching::Cross
         && !run.inputs.is_empty();
     if !fits {
@@ -199,6 +216,14 @@ fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<N
     } else {
         iterations.iter().map(one).collect()
     };
+    // A fast path that left an item to the solve function: run the node the general way.
+    if results.iter().any(|(_, errors)| {
+        errors
+            .iter()
+            .any(|(_, text)| text == crate::lift::FALL_BACK)
+    }) {
+        return None;
+    }
     let mut messages = Vec::new();
     let mut pieces = Vec::with_capacity(iterations.len());
     for (bi, (branch, errors)) in iterations.iter().zip(results) {

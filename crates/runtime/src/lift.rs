@@ -269,6 +269,36 @@ fn items<T: Item>(branch: &Branch) -> &[T] {
     T::slice(branch.column()).unwrap_or(&[])
 }
 
+/// The message a fast path's loop records for an item it leaves to the solve function; the
+/// runtime then runs the node the general way (see [`NodeType::fast_path2`]).
+pub(crate) const FALL_BACK: &str = "\u{0}fall back to the solve function";
+
+/// The lifted loop of a function of two typed items.
+fn lift2<A: Item, B: Item, O: Item>(
+    g: Arc<impl Fn(&A, &B) -> Result<O, NodeError> + Send + Sync + 'static>,
+) -> Lift {
+    Lift {
+        inputs: vec![A::TYPE, B::TYPE],
+        output: O::TYPE,
+        run: Arc::new(move |b, count, parallel| {
+            let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
+            let (l0, l1) = (a0.len(), a1.len());
+            let g = &*g;
+            let any_nulls = b[0].has_nulls() || b[1].has_nulls();
+            let nulls = move |k| b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1));
+            with_src!(a0, count, |s0| with_src!(a1, count, |s1| lift_loop(
+                count,
+                parallel,
+                any_nulls,
+                nulls,
+                move |k| g(s0.get(k), s1.get(k)),
+                move |i, j| s0.iter(i, j).zip(s1.iter(i, j)).map(|(x, y)| g(x, y)),
+                move |i, j| s0.par(i, j).zip(s1.par(i, j)).map(|(x, y)| g(x, y))
+            )))
+        }),
+    }
+}
+
 impl NodeType {
     /// Sets the solve function to a plain function of one typed item, lifted by the runtime
     /// over trees: input 0 is read as an `A`, the result is output 0. The input and output
@@ -344,27 +374,50 @@ impl NodeType {
             s.set(0, out);
             Ok(())
         });
-        node.lift = Some(Lift {
-            inputs: vec![A::TYPE, B::TYPE],
-            output: O::TYPE,
-            run: Arc::new(move |b, count, parallel| {
-                let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
-                let (l0, l1) = (a0.len(), a1.len());
-                let g = &*g;
-                let any_nulls = b[0].has_nulls() || b[1].has_nulls();
-                let nulls = move |k| b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1));
-                with_src!(a0, count, |s0| with_src!(a1, count, |s1| lift_loop(
-                    count,
-                    parallel,
-                    any_nulls,
-                    nulls,
-                    move |k| g(s0.get(k), s1.get(k)),
-                    move |i, j| s0.iter(i, j).zip(s1.iter(i, j)).map(|(x, y)| g(x, y)),
-                    move |i, j| s0.par(i, j).zip(s1.par(i, j)).map(|(x, y)| g(x, y))
-                )))
-            }),
-        });
+        node.lift = Some(lift2::<A, B, O>(g));
         node
+    }
+
+    /// Adds a fast path to a node whose solve function is general (generic ports, several
+    /// kinds of operand): when the node has exactly two item inputs and every branch of them
+    /// holds `A`s and `B`s, the runtime runs `f` as a loop over the typed columns, as for
+    /// [`NodeType::lift2`], and output 0 gets `O`s. `f` returns `None` for an item it leaves to
+    /// the solve function (one that warns, say): the node then runs the general way, so the
+    /// results are always the solve function's. `f` must agree with it wherever it gives
+    /// `Some`. Set it after [`NodeType::solve`].
+    ///
+    /// ```
+    /// use locus_runtime::{DataTree, DataType, NodeCall, NodeType, Port, Value};
+    /// let add = NodeType::new("maths.addition", "Addition", "A+B", "Maths")
+    ///     .input(Port::new("A", "A", DataType::Generic))
+    ///     .input(Port::new("B", "B", DataType::Generic))
+    ///     .output(Port::new("Result", "R", DataType::Generic))
+    ///     .solve(|s| {
+    ///         let sum = match (s.value(0), s.value(1)) {
+    ///             (Some(Value::Number(a)), Some(Value::Number(b))) => a + b,
+    ///             _ => return Err("only numbers here".into()),
+    ///         };
+    ///         if !sum.is_finite() {
+    ///             s.warning("the sum is not finite");
+    ///         }
+    ///         s.set(0, sum);
+    ///         Ok(())
+    ///     })
+    ///     .fast_path2(|a: &f64, b: &f64| Some(a + b).filter(|r| r.is_finite()));
+    /// let r = NodeCall::new(&add)
+    ///     .input(DataTree::from_list(vec![1.0, f64::MAX]))
+    ///     .input(DataTree::from_item(f64::MAX))
+    ///     .run();
+    /// // The infinite sum made the node run its solve function, which warns.
+    /// assert_eq!(r.messages.len(), 1);
+    /// ```
+    pub fn fast_path2<A: Item, B: Item, O: Item>(
+        mut self,
+        f: impl Fn(&A, &B) -> Option<O> + Send + Sync + 'static,
+    ) -> Self {
+        let g = Arc::new(move |a: &A, b: &B| f(a, b).ok_or_else(|| NodeError(FALL_BACK.into())));
+        self.fast_paths.push(lift2::<A, B, O>(g));
+        self
     }
 
     /// Sets the solve function to a plain function of three typed items (inputs 0, 1 and 2),

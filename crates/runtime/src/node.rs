@@ -242,6 +242,9 @@ pub struct NodeType {
     /// The item function behind `solve`, when the type was declared with `lift1`/`lift2`/
     /// `lift3`: the runtime runs it as a loop over typed columns.
     pub(crate) lift: Option<crate::lift::Lift>,
+    /// Loops over typed columns for data of concrete types on generic ports, tried in order
+    /// before the solve function (`fast_path2`).
+    pub(crate) fast_paths: Vec<crate::lift::Lift>,
 }
 
 impl fmt::Debug for NodeType {
@@ -273,6 +276,7 @@ impl NodeType {
             solve: Arc::new(|_| Ok(())),
             prepare: None,
             lift: None,
+            fast_paths: Vec::new(),
         }
     }
 
