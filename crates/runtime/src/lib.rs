@@ -97,6 +97,11 @@
 //! (matching, nulls, errors with path and index). Anything the loop does not cover (optional
 //! inputs, cross reference, a generic column) goes through the general iteration.
 //!
+//! A node that must keep a general solve function (generic ports that take several kinds of
+//! operand, warnings) can still add typed loops with [`NodeType::fast_path2`]: they run when the
+//! data on its ports is of the loop's concrete types, and hand the node back to the solve
+//! function as soon as one item needs it, so results never differ.
+//!
 //! # Performance
 //!
 //! `cargo bench -p locus-runtime --bench evaluation` (criterion) measures evaluation against
