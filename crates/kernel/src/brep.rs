@@ -249,12 +249,18 @@ impl Brep {
     /// # Errors
     /// [`Error::InvalidInput`] if there is no face `index`.
     pub fn extract_face(&self, index: usize) -> Result<Self> {
-        let face = self.faces.get(index).ok_or_else(|| {
+        self.faces.get(index).ok_or_else(|| {
             Error::InvalidInput(format!(
                 "face index {index} is out of range for a brep with {} faces",
                 self.faces.len()
             ))
         })?;
+        Ok(self.subset(&[index]))
+    }
+
+    /// The B-rep of the given faces (in that order) with their loops and trims, and the edges
+    /// and vertices these use, renumbered in order of first use.
+    pub(crate) fn subset(&self, faces: &[usize]) -> Self {
         let mut out = Self::default();
         let mut vertex_map: Vec<Option<usize>> = vec![None; self.vertices.len()];
         let mut edge_map: Vec<Option<usize>> = vec![None; self.edges.len()];
@@ -267,29 +273,30 @@ impl Brep {
                 out.vertices.len() - 1
             })
         };
-        out.faces.push(BrepFace {
-            surface: face.surface.clone(),
-            loops: Vec::new(),
-            reversed: face.reversed,
-        });
-        for &l in &face.loops {
-            let old_loop = &self.loops[l];
-            let loop_index = out.loops.len();
-            out.loops.push(BrepLoop {
-                face: 0,
-                kind: old_loop.kind,
-                trims: Vec::new(),
+        for &f in faces {
+            let face = &self.faces[f];
+            let face_index = out.faces.len();
+            out.faces.push(BrepFace {
+                surface: face.surface.clone(),
+                loops: Vec::new(),
+                reversed: face.reversed,
             });
-            out.faces[0].loops.push(loop_index);
-            for &t in &old_loop.trims {
-                let trim = &self.trims[t];
-                let vertices = [
-                    map_vertex(&mut out, trim.vertices[0]),
-                    map_vertex(&mut out, trim.vertices[1]),
-                ];
-                let edge = match trim.edge {
-                    None => None,
-                    Some(e) => Some(match edge_map[e] {
+            for &l in &face.loops {
+                let old_loop = &self.loops[l];
+                let loop_index = out.loops.len();
+                out.loops.push(BrepLoop {
+                    face: face_index,
+                    kind: old_loop.kind,
+                    trims: Vec::new(),
+                });
+                out.faces[face_index].loops.push(loop_index);
+                for &t in &old_loop.trims {
+                    let trim = &self.trims[t];
+                    let vertices = [
+                        map_vertex(&mut out, trim.vertices[0]),
+                        map_vertex(&mut out, trim.vertices[1]),
+                    ];
+                    let edge = trim.edge.map(|e| match edge_map[e] {
                         Some(new) => new,
                         None => {
                             let old = &self.edges[e];
@@ -305,21 +312,21 @@ impl Brep {
                             edge_map[e] = Some(out.edges.len() - 1);
                             out.edges.len() - 1
                         }
-                    }),
-                };
-                out.loops[loop_index].trims.push(out.trims.len());
-                out.trims.push(BrepTrim {
-                    curve: trim.curve.clone(),
-                    edge,
-                    reversed: trim.reversed,
-                    kind: trim.kind,
-                    loop_index,
-                    vertices,
-                });
+                    });
+                    out.loops[loop_index].trims.push(out.trims.len());
+                    out.trims.push(BrepTrim {
+                        curve: trim.curve.clone(),
+                        edge,
+                        reversed: trim.reversed,
+                        kind: trim.kind,
+                        loop_index,
+                        vertices,
+                    });
+                }
             }
         }
         out.link();
-        Ok(out)
+        out
     }
 
     /// Recomputes the derived topology: the trims of each edge, the edges of each vertex and
