@@ -227,6 +227,10 @@ pub struct NodeType {
     pub subcategory: String,
     /// What the node does, for users.
     pub description: String,
+    /// The type GUIDs of the Grasshopper components this node type stands for, lower-case
+    /// (old and new versions of a component share its name but not its GUID). Empty when the
+    /// node has no Grasshopper counterpart: it is then not importable from Grasshopper files.
+    pub gh_guids: Vec<String>,
     /// The inputs, in order.
     pub inputs: Vec<Port>,
     /// The outputs, in order.
@@ -269,6 +273,7 @@ impl NodeType {
             category: category.to_owned(),
             subcategory: String::new(),
             description: String::new(),
+            gh_guids: Vec::new(),
             inputs: Vec::new(),
             outputs: Vec::new(),
             variable_inputs: None,
@@ -289,6 +294,13 @@ impl NodeType {
     /// Sets the description.
     pub fn description(mut self, description: &str) -> Self {
         self.description = description.to_owned();
+        self
+    }
+
+    /// Declares a Grasshopper component type GUID this node type stands for (repeat for old and
+    /// new versions of the component). Stored lower-case.
+    pub fn gh_guid(mut self, guid: &str) -> Self {
+        self.gh_guids.push(guid.trim().to_ascii_lowercase());
         self
     }
 

@@ -10,6 +10,7 @@ use crate::NodeType;
 pub struct NodeRegistry {
     types: Vec<NodeType>,
     by_id: HashMap<String, usize>,
+    by_gh_guid: HashMap<String, usize>,
 }
 
 impl NodeRegistry {
@@ -20,13 +21,31 @@ impl NodeRegistry {
 
     /// Adds a node type, replacing any type with the same id.
     pub fn register(&mut self, node_type: NodeType) {
-        match self.by_id.get(&node_type.id) {
-            Some(&i) => self.types[i] = node_type,
+        let index = match self.by_id.get(&node_type.id) {
+            Some(&i) => {
+                self.by_gh_guid.retain(|_, j| *j != i);
+                i
+            }
             None => {
                 self.by_id.insert(node_type.id.clone(), self.types.len());
-                self.types.push(node_type);
+                self.types.len()
             }
+        };
+        for guid in &node_type.gh_guids {
+            self.by_gh_guid.insert(guid.clone(), index);
         }
+        if index == self.types.len() {
+            self.types.push(node_type);
+        } else {
+            self.types[index] = node_type;
+        }
+    }
+
+    /// The node type that stands for the Grasshopper component with this type GUID (any case).
+    pub fn by_gh_guid(&self, guid: &str) -> Option<&NodeType> {
+        self.by_gh_guid
+            .get(&guid.trim().to_ascii_lowercase())
+            .map(|&i| &self.types[i])
     }
 
     /// The node type with this id.
@@ -80,4 +99,39 @@ pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
         }
     }
     row[b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_node_types_by_grasshopper_guid_in_any_case() {
+        let mut registry = NodeRegistry::new();
+        registry.register(
+            NodeType::new("maths.a", "A", "A", "Maths")
+                .gh_guid("A0D62394-A118-422D-ABB3-6AF115C75B25")
+                .gh_guid("9c85271f-89fa-4e9f-9f4a-d75802120ccc"),
+        );
+        let a = registry.by_gh_guid("a0d62394-a118-422d-abb3-6af115c75b25");
+        assert_eq!(a.map(|t| t.id.as_str()), Some("maths.a"));
+        let old = registry.by_gh_guid(" 9C85271F-89FA-4E9F-9F4A-D75802120CCC ");
+        assert_eq!(old.map(|t| t.id.as_str()), Some("maths.a"));
+        assert!(
+            registry
+                .by_gh_guid("00000000-0000-0000-0000-000000000000")
+                .is_none()
+        );
+        // Replacing a type drops the GUIDs it no longer declares.
+        registry.register(
+            NodeType::new("maths.a", "A", "A", "Maths")
+                .gh_guid("9c85271f-89fa-4e9f-9f4a-d75802120ccc"),
+        );
+        assert!(
+            registry
+                .by_gh_guid("a0d62394-a118-422d-abb3-6af115c75b25")
+                .is_none()
+        );
+        assert_eq!(registry.len(), 1);
+    }
 }
