@@ -3,7 +3,7 @@
 
 use glam::{DMat3, DVec3};
 
-use crate::tolerance::SQRT_EPSILON;
+use crate::geometry::tolerance::SQRT_EPSILON;
 use crate::{Error, Plane, Point3, Result, Transform, Vector3};
 
 impl Transform {

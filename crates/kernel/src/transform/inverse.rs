@@ -2,7 +2,7 @@
 
 use glam::{DMat3, DMat4, DVec3, DVec4};
 
-use crate::tolerance::SINGULAR_TOLERANCE;
+use crate::geometry::tolerance::SINGULAR_TOLERANCE;
 use crate::{Error, Result, Transform};
 
 impl Transform {

@@ -8,8 +8,19 @@
 //! `i · count_v + j`: rows run along `u`, and each row holds the `count_v` points of one
 //! `v` column, exactly like the `cvs_u_by_v[i][j]` arrays of the reference cases.
 
-use crate::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
-use crate::surface_direction::SurfaceDirection;
+pub(crate) mod bounding_box;
+pub(crate) mod closest_point;
+pub(crate) mod curvature;
+pub(crate) mod derivatives;
+pub(crate) mod direction;
+pub(crate) mod edit;
+pub(crate) mod forms;
+pub(crate) mod grid;
+pub(crate) mod isocurve;
+pub(crate) mod normal;
+
+use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
+use crate::surface::direction::SurfaceDirection;
 use crate::{Error, Interval, Point3, Result, SurfaceDerivatives, Vector3};
 
 /// A non-uniform rational B-spline surface with knots in Rhino form.
@@ -844,7 +855,7 @@ pub(crate) mod tests {
 
     #[test]
     fn fast_basis_derivatives_match_a2_3() {
-        use crate::basis::basis_function_derivatives;
+        use crate::curve::nurbs::basis::basis_function_derivatives;
         let cases: [(usize, &[f64]); 5] = [
             (1, &[0.0, 0.5, 1.0]),
             (2, &[0.0, 0.0, 0.3, 0.3, 1.0, 1.0]),

@@ -1,6 +1,6 @@
 //! Planes: an origin with an orthonormal frame.
 
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Error, Point3, Result, Transform, Vector3};
 
 /// A plane in 3-D space given by an origin and three orthonormal axes, right-handed

@@ -18,10 +18,10 @@
 //!
 //! The smallest distance wins.
 
-use crate::basis::{MAX_ORDER, basis_functions, span_index};
-use crate::nurbs_surface::check_parameters;
-use crate::surface_direction::SurfaceDirection;
-use crate::surface_direction::SurfaceSide;
+use crate::curve::nurbs::basis::{MAX_ORDER, basis_functions, span_index};
+use crate::surface::check_parameters;
+use crate::surface::direction::SurfaceDirection;
+use crate::surface::direction::SurfaceSide;
 use crate::{Error, NurbsSurface, Point3, Result};
 
 /// The closest point on a surface to a test point.
@@ -537,7 +537,7 @@ fn box_distance_squared(points: impl Iterator<Item = Point3>, p: Point3) -> f64 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Cone, Interval, Plane, Sphere, Vector3};
 
     /// The smallest distance over a dense grid, as an upper bound for the closest point.

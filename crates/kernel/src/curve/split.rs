@@ -13,8 +13,8 @@
 //! (`[a_k, a_1 + period]`).
 
 use crate::curve::ParameterMap;
-use crate::curve_kinks::is_interior;
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::curve::kinks::is_interior;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Arc, Curve, Error, Interval, Line, NurbsCurve, Point3, Polyline, Result};
 
 impl Curve {

@@ -1,6 +1,6 @@
 //! Line segments.
 
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Error, NurbsCurve, Point3, Result, Transform, Vector3};
 
 /// The straight segment from `from` to `to`, as Rhino's `Line`.

@@ -18,7 +18,7 @@
 //! [`POWER_FORM_MAX_DEGREE`], and for short batches where the conversion would not pay off, the
 //! batch falls back to basis functions, still reusing the span between consecutive parameters.
 
-use crate::basis::{self, MAX_ORDER};
+use crate::curve::nurbs::basis::{self, MAX_ORDER};
 use crate::{Error, NurbsCurve, Point3, Result};
 
 /// The highest degree evaluated through the power form; rounding in the conversion grows like

@@ -11,7 +11,7 @@
 //! its non-zeros in columns `j … j + p − 1` (modulo `n`): a band with a few entries wrapping
 //! round into the corners, solved in `O(n p²)` operations (see `solve_cyclic`).
 
-use crate::basis::{self, MAX_DEGREE, MAX_ORDER};
+use crate::curve::nurbs::basis::{self, MAX_DEGREE, MAX_ORDER};
 use crate::{Error, KnotStyle, NurbsCurve, Point3, Result};
 
 impl NurbsCurve {

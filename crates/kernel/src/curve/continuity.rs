@@ -3,7 +3,9 @@
 //! (G1), then the curvature vectors (G2), and report the highest level reached.
 
 use crate::Curve;
-use crate::tolerance::{ANGLE_TOLERANCE, CURVATURE_TOLERANCE, DEFAULT_TOLERANCE, ZERO_TOLERANCE};
+use crate::geometry::tolerance::{
+    ANGLE_TOLERANCE, CURVATURE_TOLERANCE, DEFAULT_TOLERANCE, ZERO_TOLERANCE,
+};
 
 /// How smoothly one curve continues into the next. The levels are ordered:
 /// `None < G0 < G1 < G2`.

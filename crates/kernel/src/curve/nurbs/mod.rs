@@ -15,8 +15,15 @@
 //! Editing operations (knot insertion, split, reverse, transform, reparameterization) live in
 //! `nurbs_curve_edit.rs`, batch evaluation in `nurbs_curve_batch.rs`.
 
-use crate::basis::{self, MAX_DEGREE, MAX_ORDER};
-use crate::tolerance::ZERO_TOLERANCE;
+pub mod basis;
+pub(crate) mod batch;
+pub(crate) mod create;
+pub(crate) mod edit;
+pub(crate) mod interpolate;
+pub(crate) mod interpolate_periodic;
+
+use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER};
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Error, Interval, Plane, Point3, Result, Vector3, perpendicular_to};
 
 /// A non-uniform rational B-spline curve in Rhino's representation.

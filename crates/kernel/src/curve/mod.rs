@@ -9,9 +9,23 @@
 //!
 //! Measurements (length, division, closest point) are in `curve_measure.rs`.
 
+pub(crate) mod arc;
+pub(crate) mod arc_length;
+pub(crate) mod bezier;
+pub(crate) mod circle;
+pub(crate) mod closest_point;
+pub(crate) mod continuity;
+pub(crate) mod hermite;
+pub(crate) mod kinks;
+pub(crate) mod line;
+pub(crate) mod measure;
+pub(crate) mod nurbs;
+pub(crate) mod polyline;
+pub(crate) mod split;
+
 use std::f64::consts::{FRAC_PI_2, TAU};
 
-use crate::nurbs_curve::{curvature_vector, frame_from, signed_curvature};
+use crate::curve::nurbs::{curvature_vector, frame_from, signed_curvature};
 use crate::{
     Arc, Bezier, Circle, CubicHermite, Error, Interval, Line, NurbsCurve, Plane, Point3, Polyline,
     Result, Transform, Vector3,

@@ -10,7 +10,7 @@
 
 use std::sync::OnceLock;
 
-use crate::tolerance::LENGTH_TOLERANCE;
+use crate::geometry::tolerance::LENGTH_TOLERANCE;
 use crate::{Error, NurbsCurve, Result, Vector3};
 
 /// The number of Gauss–Legendre nodes per panel.

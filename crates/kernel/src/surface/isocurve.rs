@@ -1,7 +1,7 @@
 //! Isocurves: the curves on a surface along which one parameter is constant.
 
-use crate::basis::{MAX_ORDER, basis_functions, span_index};
-use crate::surface_direction::SurfaceDirection;
+use crate::curve::nurbs::basis::{MAX_ORDER, basis_functions, span_index};
+use crate::surface::direction::SurfaceDirection;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result};
 
 impl NurbsSurface {

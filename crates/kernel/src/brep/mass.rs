@@ -31,9 +31,9 @@
 
 use std::sync::OnceLock;
 
-use crate::basis::{MAX_ORDER, span_index};
 use crate::brep::Brep;
-use crate::nurbs_surface::basis_with_derivatives;
+use crate::curve::nurbs::basis::{MAX_ORDER, span_index};
+use crate::surface::basis_with_derivatives;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result, Vector3};
 
 /// The number of Gauss–Legendre nodes per panel.
@@ -601,7 +601,7 @@ mod tests {
     #[test]
     fn greens_theorem_agrees_with_direct_quadrature_on_multi_span_surfaces() {
         for rational in [false, true] {
-            let surface = crate::nurbs_surface::tests::wavy(rational);
+            let surface = crate::surface::tests::wavy(rational);
             let brep = Brep::from_surface(surface.clone()).unwrap();
             let frame = Frame::around(std::iter::once(&surface)).unwrap();
             for reversed in [false, true] {

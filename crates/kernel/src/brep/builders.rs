@@ -2,7 +2,7 @@
 //! bounded by polylines.
 
 use crate::brep::{Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, LoopKind, TrimKind};
-use crate::surface_direction::{SurfaceDirection, SurfaceSide};
+use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{
     Circle, Cone, Cylinder, Error, Interval, Line, NurbsCurve, NurbsSurface, OrientedBox, Plane,
     Point3, Result, Sphere, Vector3,
@@ -85,7 +85,8 @@ fn line_trim(a: (f64, f64), b: (f64, f64)) -> Result<NurbsCurve> {
 
 /// A straight 3-D edge curve, with a clear error for coincident ends.
 fn line_edge(a: Point3, b: Point3) -> Result<NurbsCurve> {
-    if a.distance(b) <= crate::tolerance::ZERO_TOLERANCE * (1.0 + a.to_vector().length()) {
+    if a.distance(b) <= crate::geometry::tolerance::ZERO_TOLERANCE * (1.0 + a.to_vector().length())
+    {
         return Err(Error::ZeroLength { what: "brep edge" });
     }
     Line::new(a, b).to_nurbs()
@@ -581,8 +582,9 @@ fn clean_polygon(points: &[Point3]) -> Result<Vec<Point3>> {
     let scale = points
         .iter()
         .fold(0.0f64, |m, p| m.max(p.to_vector().length()));
-    let same =
-        |a: Point3, b: Point3| a.distance(b) <= crate::tolerance::ZERO_TOLERANCE * (1.0 + scale);
+    let same = |a: Point3, b: Point3| {
+        a.distance(b) <= crate::geometry::tolerance::ZERO_TOLERANCE * (1.0 + scale)
+    };
     let mut out: Vec<Point3> = Vec::with_capacity(points.len());
     for &p in points {
         if out.last().is_none_or(|&q| !same(p, q)) {

@@ -2,8 +2,8 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-use crate::circle::circumcenter;
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::curve::circle::circumcenter;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Circle, Error, Interval, NurbsCurve, Plane, Point3, Result, Transform, Vector3};
 
 /// A circular arc: a circle and an increasing angle interval of length in `(0, 2π]`, as Rhino's

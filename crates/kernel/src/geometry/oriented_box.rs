@@ -165,7 +165,7 @@ impl OrientedBox {
     /// [`is_valid`](Self::is_valid).
     ///
     /// Rhino, given an invalid tolerance, uses `√ε` times the largest size, with `√ε` =
-    /// [`SQRT_EPSILON`](crate::tolerance::SQRT_EPSILON); pass that for the same answer.
+    /// [`SQRT_EPSILON`](crate::geometry::tolerance::SQRT_EPSILON); pass that for the same answer.
     pub fn degeneracy(&self, tolerance: f64) -> Option<usize> {
         if !self.is_valid() {
             return None;

@@ -18,7 +18,11 @@
 //! this module's siblings (`Brep::from_box_corners`, `Brep::from_sphere`, ...), which
 //! guarantee consistent topology; the parts are then read-only.
 
-use crate::surface_direction::SurfaceSide;
+pub(crate) mod builders;
+pub(crate) mod join;
+pub(crate) mod mass;
+
+use crate::surface::direction::SurfaceSide;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result, Transform};
 
 /// A vertex of a B-rep.

@@ -7,7 +7,7 @@
 //! degree (elsewhere it is at least C¹); a polyline only at its interior vertices; lines, circles
 //! and arcs never.
 
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Curve, Error, Interval, Result, Vector3};
 
 /// The angle between incoming and outgoing tangents above which a point counts as a kink:

@@ -17,7 +17,7 @@
 //! the points are unevenly spaced) or the square root of the chord length. The linear system is
 //! banded and solved by Gaussian elimination with partial pivoting inside the band.
 
-use crate::basis::{self, MAX_ORDER};
+use crate::curve::nurbs::basis::{self, MAX_ORDER};
 use crate::{Error, NurbsCurve, Point3, Result, Vector3};
 
 /// How the parameters of the interpolated points, and so the knots, are spaced.

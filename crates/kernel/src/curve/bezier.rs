@@ -1,6 +1,6 @@
 //! Bézier curves of any degree, evaluated with de Casteljau's algorithm.
 
-use crate::basis::{MAX_DEGREE, MAX_ORDER};
+use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER};
 use crate::{Error, NurbsCurve, Point3, Result, Vector3};
 
 /// A non-rational Bézier curve on the parameter interval `[0, 1]`, of degree

@@ -8,7 +8,7 @@
 //! to rounding rather than the loose boxes of the control points.
 
 use crate::brep::Brep;
-use crate::surface_direction::{SurfaceDirection, SurfaceSide};
+use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{BoundingBox, NurbsCurve, NurbsSurface, Point3};
 
 /// Samples per span and direction before Newton's method takes over.
@@ -279,7 +279,7 @@ fn inside(polygons: &[Vec<(f64, f64)>], u: f64, v: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Cylinder, Interval, OrientedBox, Plane, Sphere, Vector3};
 
     fn close(a: &BoundingBox, b: &BoundingBox, tol: f64) -> bool {

@@ -1,6 +1,6 @@
 //! Polylines: chains of line segments.
 
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Error, Interval, Line, NurbsCurve, Point3, Result, Transform};
 
 /// A chain of straight segments through at least two finite points, as Rhino's `Polyline`.

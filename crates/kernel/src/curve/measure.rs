@@ -7,7 +7,7 @@
 use crate::{Curve, CurveClosestPoint, Error, Point3, Result};
 
 impl Curve {
-    /// The length of the curve (NURBS curves to [`crate::tolerance::LENGTH_TOLERANCE`]).
+    /// The length of the curve (NURBS curves to [`crate::geometry::tolerance::LENGTH_TOLERANCE`]).
     pub fn length(&self) -> f64 {
         match self {
             Self::Line { line, .. } => line.length(),
@@ -82,7 +82,7 @@ impl Curve {
         if let Self::Nurbs(c) = self {
             return c.divide_by_count(count);
         }
-        crate::arc_length::check_division_count(count)?;
+        crate::curve::arc_length::check_division_count(count)?;
         let total = self.length();
         let d = self.domain();
         let last = if self.is_closed() { count - 1 } else { count };
@@ -112,7 +112,7 @@ impl Curve {
         }
         let total = self.length();
         let slack = 1e-9 * total;
-        let count = crate::arc_length::division_count(total + slack, length)?;
+        let count = crate::curve::arc_length::division_count(total + slack, length)?;
         let mut out = Vec::with_capacity(count + 1);
         for k in 0..=count {
             let s = k as f64 * length;

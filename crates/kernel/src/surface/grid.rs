@@ -7,7 +7,7 @@
 //! [`NurbsSurface::points_on_grid`] computes the `v` basis once per column, the row curve once
 //! per row, and then only `q + 1` control points per grid point.
 
-use crate::basis::{MAX_ORDER, basis_functions, span_index};
+use crate::curve::nurbs::basis::{MAX_ORDER, basis_functions, span_index};
 use crate::{Error, NurbsSurface, Point3, Result};
 
 impl NurbsSurface {
@@ -216,7 +216,7 @@ fn fill_row<const N: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Interval, Plane, Sphere};
 
     fn check_against_point_at(s: &NurbsSurface) {

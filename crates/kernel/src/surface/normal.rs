@@ -1,7 +1,7 @@
 //! Surface normals and frames, including the limit normal at singular points.
 
-use crate::nurbs_surface::check_parameters;
-use crate::tolerance::SQRT_EPSILON;
+use crate::geometry::tolerance::SQRT_EPSILON;
+use crate::surface::check_parameters;
 use crate::{Error, NurbsSurface, Plane, Result, SurfaceDerivatives, Vector3};
 
 impl NurbsSurface {
@@ -118,7 +118,7 @@ fn unit_if_significant(w: Vector3, scale: f64) -> Option<Vector3> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Cone, Point3, Sphere};
 
     #[test]

@@ -1,8 +1,8 @@
 //! Editing NURBS surfaces without changing their shape (reparameterizing, reversing,
 //! transposing), transforming them, and recognizing collapsed and closed sides.
 
-use crate::surface_direction::{SurfaceDirection, SurfaceSide};
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
+use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{Error, Interval, NurbsSurface, Point3, Result, Transform};
 
 impl NurbsSurface {
@@ -211,7 +211,7 @@ fn remap_knots(knots: &[f64], from: Interval, to: Interval) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Cone, Cylinder, Plane, Sphere, Vector3};
 
     fn samples(s: &NurbsSurface) -> impl Iterator<Item = (f64, f64)> + '_ {

@@ -13,7 +13,7 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 use glam::DVec3;
 
-use crate::tolerance::ZERO_TOLERANCE;
+use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{Error, Result};
 
 /// A free vector in 3-D space: a direction with a length, and no position.

@@ -1,7 +1,7 @@
 //! Principal, Gaussian and mean curvature of surfaces from the fundamental forms.
 
-use crate::nurbs_surface::check_parameters;
-use crate::surface_normal::regular_normal;
+use crate::surface::check_parameters;
+use crate::surface::normal::regular_normal;
 use crate::{Error, NurbsSurface, Point3, Result, SurfaceDerivatives, Vector3};
 
 /// The curvature of a surface at a point, with openNURBS's sign convention.
@@ -125,7 +125,7 @@ impl NurbsSurface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs_surface::tests::wavy;
+    use crate::surface::tests::wavy;
     use crate::{Cylinder, Plane, Sphere};
 
     #[test]

@@ -1,0 +1,11 @@
+//! The elements every other module builds on: points and vectors, planes, intervals, axis-aligned
+//! and oriented boxes, and the named tolerances.
+
+pub(crate) mod bounding_box;
+pub(crate) mod interval;
+pub(crate) mod oriented_box;
+pub(crate) mod oriented_box_boundary;
+pub(crate) mod plane;
+pub(crate) mod point;
+pub mod tolerance;
+pub(crate) mod vector;
