@@ -18,6 +18,7 @@
 //! this module's siblings (`Brep::from_box_corners`, `Brep::from_sphere`, ...), which
 //! guarantee consistent topology; the parts are then read-only.
 
+pub(crate) mod bounding_box;
 pub(crate) mod builders;
 pub(crate) mod join;
 pub(crate) mod mass;

@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes (Rhino's `BoundingBox`).
 
-use crate::{Error, Interval, OrientedBox, Point3, Result, Transform, Vector3};
+use crate::{Error, Interval, OrientedBox, Point3, Result, Vector3};
 
 /// An axis-aligned box given by its minimum and maximum corners, as Rhino's `BoundingBox`.
 ///
@@ -288,22 +288,6 @@ impl BoundingBox {
         Some([d.x, d.y, d.z].iter().filter(|&&s| s <= tolerance).count())
     }
 
-    /// The bounding box of the eight transformed corners (Rhino's `BoundingBox.Transform`).
-    ///
-    /// This contains the transformed box, and is the tightest axis-aligned box that does for
-    /// affine transforms; after a rotation it is in general larger than the rotated box (use
-    /// [`OrientedBox`] to keep the orientation). The empty box stays empty.
-    pub fn transformed(&self, xform: &Transform) -> Self {
-        if self.is_empty() {
-            return Self::EMPTY;
-        }
-        let mut res = Self::EMPTY;
-        for corner in self.corners() {
-            res.include_point(xform.transform_point(corner));
-        }
-        res
-    }
-
     /// The box as an [`OrientedBox`] on the world XY plane.
     #[inline]
     pub fn to_oriented_box(&self) -> OrientedBox {
@@ -314,6 +298,7 @@ impl BoundingBox {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Transform;
 
     fn unit_box() -> BoundingBox {
         BoundingBox::new(Point3::new(1.0, 2.0, 3.0), Point3::new(0.0, 0.0, 0.0))

@@ -1,6 +1,6 @@
 //! Oriented boxes: Rhino's and Grasshopper's `Box`, a plane with three intervals.
 
-use crate::{BoundingBox, Error, Interval, Plane, Point3, Result, Transform, Vector3};
+use crate::{BoundingBox, Error, Interval, Plane, Point3, Result, Vector3};
 
 /// A box aligned with a plane: the points `plane.point_at(u, v, w)` with `u` in `x`, `v` in `y`
 /// and `w` in `z` (Rhino's and Grasshopper's `Box`).
@@ -206,25 +206,6 @@ impl OrientedBox {
         res
     }
 
-    /// The box transformed as Rhino's `Box.Transform`: the plane is transformed as
-    /// [`Plane::transformed`] (and so stays orthonormal and right-handed) and the new
-    /// intervals are the ranges of the eight transformed corners' coordinates in it.
-    ///
-    /// For similarities (rigid motions, uniform scales, mirrors) the result is exactly the
-    /// transformed box. For shears and non-uniform scales that do not follow the box's axes the
-    /// transformed solid is not a box; the result is then the smallest box on the transformed
-    /// plane that contains it.
-    ///
-    /// # Errors
-    /// As [`Plane::transformed`]: [`Error::DegenerateTransformResult`] when the transform
-    /// collapses the plane's x or y axis, [`Error::NotFinite`] for a non-finite transform.
-    pub fn transformed(&self, xform: &Transform) -> Result<Self> {
-        let plane = self.plane.transformed(xform)?;
-        let mut corners = self.corners();
-        xform.transform_points(&mut corners);
-        Self::from_points_in_plane(&plane, &corners)
-    }
-
     /// Whether the plane and the intervals are finite.
     pub fn is_finite(&self) -> bool {
         self.plane.is_finite() && self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
@@ -259,6 +240,7 @@ mod tests {
     use std::f64::consts::FRAC_PI_2;
 
     use super::*;
+    use crate::Transform;
 
     fn tilted_plane() -> Plane {
         Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, -1.0, 2.0)).unwrap()

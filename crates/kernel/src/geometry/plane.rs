@@ -1,7 +1,7 @@
 //! Planes: an origin with an orthonormal frame.
 
 use crate::geometry::tolerance::ZERO_TOLERANCE;
-use crate::{Error, Point3, Result, Transform, Vector3};
+use crate::{Error, Point3, Result, Vector3};
 
 /// A plane in 3-D space given by an origin and three orthonormal axes, right-handed
 /// (`z_axis = x_axis × y_axis`), as in Rhino.
@@ -245,46 +245,6 @@ impl Plane {
         }
     }
 
-    /// The plane transformed as Rhino transforms planes (`ON_Plane::Transform`).
-    ///
-    /// The origin is transformed as a point and the x and y axes as vectors (for projective
-    /// transforms, as differences of transformed points); the result is then rebuilt with
-    /// [`from_frame`](Self::from_frame): the x axis is the unit image of the x axis, the y axis
-    /// the image of the y axis made perpendicular to it, and the normal their cross product.
-    /// The plane therefore stays orthonormal and right-handed under every transform: under a
-    /// mirror its normal is `x′ × y′`, the reverse of the mirrored normal, and under a shear or
-    /// a non-uniform scale the axes are re-orthonormalized. The identity returns the plane
-    /// unchanged, bit for bit.
-    ///
-    /// # Errors
-    /// [`Error::NotFinite`] if the transform has a NaN or infinite entry,
-    /// [`Error::DegenerateTransformResult`] when the transform collapses the x or y axis or makes
-    /// them parallel (a projection onto a plane perpendicular to this one, a zero scale).
-    pub fn transformed(&self, xform: &Transform) -> Result<Self> {
-        if !xform.is_finite() {
-            return Err(Error::NotFinite { what: "transform" });
-        }
-        if *xform == Transform::IDENTITY {
-            return Ok(*self);
-        }
-        let origin = xform.transform_point(self.origin);
-        let (x_dir, y_dir) = if xform.is_affine() {
-            (
-                xform.transform_vector(self.x_axis),
-                xform.transform_vector(self.y_axis),
-            )
-        } else {
-            (
-                xform.transform_point(self.origin + self.x_axis) - origin,
-                xform.transform_point(self.origin + self.y_axis) - origin,
-            )
-        };
-        Self::from_frame(origin, x_dir, y_dir).map_err(|err| match err {
-            Error::NotFinite { .. } => err,
-            _ => Error::DegenerateTransformResult { what: "plane" },
-        })
-    }
-
     /// Whether origin and axes are finite.
     #[inline]
     pub fn is_finite(&self) -> bool {
@@ -359,6 +319,7 @@ pub fn perpendicular_to(v: Vector3) -> Vector3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Transform;
 
     #[test]
     fn three_collinear_points_are_an_error() {

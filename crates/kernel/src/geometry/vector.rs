@@ -338,19 +338,6 @@ impl Vector3 {
         }
         crate::perpendicular_to(self.try_normalize()?).try_normalize()
     }
-
-    /// The vector rotated by `angle` radians about `axis` (counter-clockwise seen from the tip
-    /// of the axis), as Grasshopper's *Rotate* vector component.
-    ///
-    /// # Errors
-    /// As [`Transform::rotation`](crate::Transform::rotation).
-    pub fn rotated(self, angle: f64, axis: Self) -> Result<Self> {
-        if !self.is_finite() {
-            return Err(Error::NotFinite { what: "vector" });
-        }
-        let rotation = crate::Transform::rotation(angle, axis, crate::Point3::ORIGIN)?;
-        Ok(rotation.transform_vector(self))
-    }
 }
 
 impl Add for Vector3 {

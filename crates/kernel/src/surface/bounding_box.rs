@@ -1,4 +1,5 @@
-//! Tight bounding boxes of surfaces, curves used as edges, and B-reps.
+//! Tight bounding boxes of surfaces (curves: `curve/nurbs/bounding_box.rs`, B-reps:
+//! `brep/bounding_box.rs`).
 //!
 //! The largest value of a coordinate over a surface is reached on its boundary or at an
 //! interior point where that coordinate is stationary (`∂S_k/∂u = ∂S_k/∂v = 0`, where the
@@ -7,14 +8,9 @@
 //! polish the best samples with Newton's method confined to the span, so the boxes are tight
 //! to rounding rather than the loose boxes of the control points.
 
-use crate::brep::Brep;
+use crate::curve::nurbs::bounding_box::{MAX_ITERATIONS, SAMPLES, include_curve};
 use crate::surface::direction::{SurfaceDirection, SurfaceSide};
-use crate::{BoundingBox, NurbsCurve, NurbsSurface, Point3};
-
-/// Samples per span and direction before Newton's method takes over.
-const SAMPLES: usize = 9;
-/// The most Newton steps per start.
-const MAX_ITERATIONS: usize = 50;
+use crate::{BoundingBox, NurbsSurface, Point3};
 
 impl NurbsSurface {
     /// The box of the control points, which contains the surface (the convex hull property of
@@ -145,141 +141,11 @@ impl NurbsSurface {
     }
 }
 
-impl NurbsCurve {
-    /// The tight axis-aligned bounding box of the curve: its ends and the points where a
-    /// coordinate's derivative vanishes (as for B-rep edges).
-    pub fn bounding_box(&self) -> BoundingBox {
-        let mut bbox = BoundingBox::EMPTY;
-        include_curve(self, &mut bbox);
-        bbox
-    }
-}
-
-/// Grows `bbox` to the tight box of a NURBS curve: its ends and the points where a
-/// coordinate's derivative vanishes.
-pub(crate) fn include_curve(curve: &NurbsCurve, bbox: &mut BoundingBox) {
-    bbox.include_point(curve.start_point());
-    bbox.include_point(curve.end_point());
-    let breaks = curve.span_breaks();
-    for w in breaks.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let at = |k: usize| a + (b - a) * k as f64 / (SAMPLES - 1) as f64;
-        let samples: Vec<Point3> = (0..SAMPLES).map(|k| curve.point_at(at(k))).collect();
-        for axis in 0..3 {
-            for sign in [1.0, -1.0] {
-                let value = |p: Point3| sign * p.to_array()[axis];
-                let (mut k_best, mut best) = (0, f64::NEG_INFINITY);
-                for (k, &p) in samples.iter().enumerate() {
-                    if value(p) > best {
-                        best = value(p);
-                        k_best = k;
-                    }
-                }
-                let mut t = at(k_best);
-                let mut f = best;
-                for _ in 0..MAX_ITERATIONS {
-                    let (_, d1, d2) = curve.point_and_derivatives_at(t);
-                    let g = sign * d1.to_array()[axis];
-                    let h = sign * d2.to_array()[axis];
-                    let mut s = if h < 0.0 {
-                        -g / h
-                    } else {
-                        0.1 * (b - a) * g.signum()
-                    };
-                    if g == 0.0 {
-                        break;
-                    }
-                    let mut moved = false;
-                    for _ in 0..40 {
-                        let nt = (t + s).clamp(a, b);
-                        let nf = value(curve.point_at(nt));
-                        if nf >= f {
-                            moved = (nt - t).abs() > 4.0 * f64::EPSILON * (1.0 + t.abs());
-                            t = nt;
-                            f = nf;
-                            break;
-                        }
-                        s *= 0.5;
-                    }
-                    if !moved {
-                        break;
-                    }
-                }
-                bbox.include_point(curve.point_at(t));
-            }
-        }
-    }
-}
-
-impl Brep {
-    /// The tight axis-aligned bounding box: the vertices, the extremes of every edge, and the
-    /// interior extremes of each face that lie inside its trimmed region.
-    pub fn bounding_box(&self) -> BoundingBox {
-        let mut bbox = BoundingBox::EMPTY;
-        for v in &self.vertices {
-            bbox.include_point(v.point);
-        }
-        for e in &self.edges {
-            include_curve(&e.curve, &mut bbox);
-        }
-        for f in 0..self.faces.len() {
-            let surface = &self.faces[f].surface;
-            if self.is_untrimmed(f) {
-                surface.include_interior_extremes(&|_, _| true, &mut bbox);
-            } else {
-                let polygons = self.face_polygons(f);
-                surface.include_interior_extremes(&|u, v| inside(&polygons, u, v), &mut bbox);
-            }
-        }
-        bbox
-    }
-
-    /// The face's loops as polygons in parameter space, each trim sampled densely per span.
-    fn face_polygons(&self, f: usize) -> Vec<Vec<(f64, f64)>> {
-        self.faces[f]
-            .loops
-            .iter()
-            .map(|&l| {
-                let mut polygon = Vec::new();
-                for &t in &self.loops[l].trims {
-                    let curve = &self.trims[t].curve;
-                    let breaks = curve.span_breaks();
-                    let n = if curve.degree() == 1 { 1 } else { 32 };
-                    for w in breaks.windows(2) {
-                        for k in 0..n {
-                            let p = curve.point_at(w[0] + (w[1] - w[0]) * k as f64 / n as f64);
-                            polygon.push((p.x, p.y));
-                        }
-                    }
-                }
-                polygon
-            })
-            .collect()
-    }
-}
-
-/// Even-odd containment of `(u, v)` in a set of polygons (outer boundary and holes).
-fn inside(polygons: &[Vec<(f64, f64)>], u: f64, v: f64) -> bool {
-    let mut count = false;
-    for polygon in polygons {
-        let n = polygon.len();
-        for i in 0..n {
-            let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-            if (a.1 > v) != (b.1 > v) {
-                let x = a.0 + (v - a.1) / (b.1 - a.1) * (b.0 - a.0);
-                if u < x {
-                    count = !count;
-                }
-            }
-        }
-    }
-    count
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::surface::tests::wavy;
+    use crate::{Brep, NurbsCurve};
     use crate::{Cylinder, Interval, OrientedBox, Plane, Sphere, Vector3};
 
     fn close(a: &BoundingBox, b: &BoundingBox, tol: f64) -> bool {

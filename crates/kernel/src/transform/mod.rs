@@ -19,6 +19,7 @@
 //! | [`Transform::plane_to_plane`] | `Transform.PlaneToPlane(from, to)` (Grasshopper's *Orient*) |
 //! | [`Transform::change_basis`] | `Transform.ChangeBasis(from, to)` |
 
+mod apply;
 mod constructors;
 mod inverse;
 

@@ -17,6 +17,7 @@
 
 pub mod basis;
 pub(crate) mod batch;
+pub(crate) mod bounding_box;
 pub(crate) mod create;
 pub(crate) mod edit;
 pub(crate) mod interpolate;
