@@ -1,0 +1,379 @@
+//! Checking each node: its type, input names, values, settings and modifiers.
+
+use super::*;
+
+impl<'a> Checker<'a> {
+    /// Ids, types and variable input names.
+    pub(super) fn nodes(&mut self) {
+        let graph = self.graph;
+        for (i, node) in graph.nodes.iter().enumerate() {
+            let id = node.id.0.as_str();
+            let at = self.node_offset(i);
+            if id.is_empty() || id.contains(['.', '"']) || id.contains(char::is_whitespace) {
+                self.error(
+                    DiagnosticKind::InvalidNodeId {
+                        node: id.to_owned(),
+                    },
+                    at,
+                );
+            }
+            match self.index.get(id) {
+                Some(&first) => {
+                    let first_line = self.location(self.node_offset(first)).map(|l| l.line);
+                    self.error(
+                        DiagnosticKind::DuplicateNodeId {
+                            node: id.to_owned(),
+                            first_line,
+                        },
+                        at,
+                    );
+                }
+                None => {
+                    self.index.insert(id, i);
+                }
+            }
+            let resolved = match self.registry.get(&node.node_type) {
+                Some(node_type) => Some(self.resolve_inputs(i, node_type)),
+                None => {
+                    let suggestions = suggestions(self.registry, &node.node_type);
+                    let at = self
+                        .map()
+                        .and_then(|m| m.nodes.get(i))
+                        .map(|n| n.node_type.start);
+                    self.error(
+                        DiagnosticKind::UnknownNodeType {
+                            node: id.to_owned(),
+                            node_type: node.node_type.clone(),
+                            suggestions,
+                        },
+                        at,
+                    );
+                    None
+                }
+            };
+            let n_inputs = resolved.as_ref().map_or(0, |r| r.inputs.len());
+            let n_settings = resolved.as_ref().map_or(0, |r| r.node_type.settings.len());
+            self.resolved.push(resolved);
+            self.values.push(vec![None; n_inputs]);
+            self.values_given.push(vec![false; n_inputs]);
+            self.wire_ends.push(vec![false; n_inputs]);
+            self.sources.push(vec![Vec::new(); n_inputs]);
+            self.modifiers.push(vec![Vec::new(); n_inputs]);
+            self.settings.push(vec![None; n_settings]);
+            self.named_targets.push(vec![None; n_inputs]);
+        }
+    }
+
+    fn resolve_inputs(&mut self, i: usize, node_type: &'a NodeType) -> Resolved<'a> {
+        let node = &self.graph.nodes[i];
+        let Some(names) = &node.input_names else {
+            return Resolved {
+                node_type,
+                inputs: node_type.resolve_inputs(None),
+            };
+        };
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        let name_at = |k: usize| spans.and_then(|s| s.input_names.get(k)).map(|r| r.start);
+        if node_type.variable_inputs.is_none() {
+            self.error(
+                DiagnosticKind::BadInputNames {
+                    node: node.id.0.clone(),
+                    message: format!(
+                        "node type \"{}\" has fixed inputs, so `inputs` cannot be given",
+                        node_type.id
+                    ),
+                },
+                name_at(0).or(self.node_offset(i)),
+            );
+            return Resolved {
+                node_type,
+                inputs: node_type.resolve_inputs(None),
+            };
+        }
+        let mut kept: Vec<String> = Vec::with_capacity(names.len());
+        for (k, name) in names.iter().enumerate() {
+            let message = if name.trim().is_empty() {
+                Some("empty input name".to_owned())
+            } else if names[..k].contains(name) {
+                Some(format!("duplicate input name \"{name}\""))
+            } else {
+                None
+            };
+            if let Some(message) = message {
+                self.error(
+                    DiagnosticKind::BadInputNames {
+                        node: node.id.0.clone(),
+                        message,
+                    },
+                    name_at(k),
+                );
+            } else {
+                kept.push(name.clone());
+            }
+        }
+        // Bad names are left out so that they cause no further errors.
+        Resolved {
+            node_type,
+            inputs: node_type.resolve_inputs(Some(&kept)),
+        }
+    }
+
+    /// The input of resolved node `i` named `port`, reporting an unknown port at `at`.
+    fn find_input(&mut self, i: usize, port: &str, at: Option<usize>) -> Option<usize> {
+        let r = self.resolved[i].as_ref()?;
+        if let Some(k) = r.inputs.iter().position(|p| p.is_named(port)) {
+            return Some(k);
+        }
+        let kind = DiagnosticKind::UnknownPort {
+            node: self.graph.nodes[i].id.0.clone(),
+            node_type: r.node_type.id.clone(),
+            port: port.to_owned(),
+            direction: PortDirection::Input,
+            valid: r.inputs.iter().map(|p| p.nickname.clone()).collect(),
+        };
+        self.error(kind, at);
+        None
+    }
+
+    /// Parses a literal written at `span` of the source (or without source, its own text),
+    /// returning the error message and its offset in the file.
+    pub(super) fn parse_literal<T>(
+        &self,
+        literal: &Literal,
+        span: Option<&Range<usize>>,
+        read: impl Fn(&Node) -> Result<T, LiteralError>,
+    ) -> Result<T, (String, Option<usize>)> {
+        let (text, base) = match (self.doc, span) {
+            (Some(doc), Some(span)) => match doc.source().get(span.clone()) {
+                Some(text) => (text, Some(span.start)),
+                None => (literal.0.as_str(), None),
+            },
+            _ => (literal.0.as_str(), None),
+        };
+        let node = syntax::parse(text).map_err(|e| (e.message, base.map(|b| b + e.offset)))?;
+        read(&node).map_err(|e| (e.message, base.map(|b| b + e.span.start)))
+    }
+
+    pub(super) fn node_values(&mut self, i: usize) {
+        let graph = self.graph;
+        let node = &graph.nodes[i];
+        if self.resolved[i].is_none() {
+            return;
+        }
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        for (j, (port, literal)) in node.values.iter().enumerate() {
+            let span = spans.and_then(|s| s.values.get(j));
+            let Some(k) = self.find_input(i, port, span.map(|s| s[0].start)) else {
+                continue;
+            };
+            let Some(input) = self.resolved[i].as_ref().map(|r| r.inputs[k].clone()) else {
+                continue;
+            };
+            if self.values_given[i][k] {
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!(
+                            "input \"{}\" of node \"{}\" has two values",
+                            input.nickname, node.id
+                        ),
+                    },
+                    span.map(|s| s[0].start),
+                );
+                continue;
+            }
+            self.values_given[i][k] = true;
+            let data_type = input.data_type;
+            match self.parse_literal(literal, span.map(|s| &s[1]), |n| {
+                tree_from_node(n, data_type)
+            }) {
+                Ok(tree) => self.values[i][k] = Some(tree),
+                Err((message, at)) => self.error(
+                    DiagnosticKind::BadValue {
+                        node: node.id.0.clone(),
+                        port: input.nickname.clone(),
+                        message,
+                    },
+                    at.or(span.map(|s| s[1].start)),
+                ),
+            }
+        }
+    }
+
+    pub(super) fn node_settings(&mut self, i: usize) {
+        let graph = self.graph;
+        let node = &graph.nodes[i];
+        let Some(node_type) = self.resolved[i].as_ref().map(|r| r.node_type) else {
+            return;
+        };
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        for (j, (name, literal)) in node.settings.iter().enumerate() {
+            let span = spans.and_then(|s| s.settings.get(j));
+            let name_at = span.map(|s| s[0].start);
+            let Some(k) = node_type.settings.iter().position(|s| s.name == *name) else {
+                self.error(
+                    DiagnosticKind::UnknownSetting {
+                        node: node.id.0.clone(),
+                        setting: name.clone(),
+                        valid: node_type.settings.iter().map(|s| s.name.clone()).collect(),
+                    },
+                    name_at,
+                );
+                continue;
+            };
+            if self.settings[i][k].is_some() {
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!(
+                            "setting \"{name}\" of node \"{}\" is given twice",
+                            node.id
+                        ),
+                    },
+                    name_at,
+                );
+                continue;
+            }
+            let data_type = node_type.settings[k].data_type;
+            match self.parse_literal(literal, span.map(|s| &s[1]), |n| {
+                value_from_node(n, data_type)
+            }) {
+                Ok(value) => self.settings[i][k] = Some(value),
+                Err((message, at)) => self.error(
+                    DiagnosticKind::BadSetting {
+                        node: node.id.0.clone(),
+                        setting: name.clone(),
+                        message,
+                    },
+                    at.or(span.map(|s| s[1].start)),
+                ),
+            }
+        }
+    }
+
+    pub(super) fn node_modifiers(&mut self, i: usize) {
+        let graph = self.graph;
+        let node = &graph.nodes[i];
+        if self.resolved[i].is_none() {
+            return;
+        }
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        for (j, (port, list)) in node.modifiers.iter().enumerate() {
+            let span = spans.and_then(|s| s.modifiers.get(j));
+            let port_at = span.map(|s| s.0.start);
+            let Some(k) = self.find_input(i, port, port_at) else {
+                continue;
+            };
+            let Some(input) = self.resolved[i].as_ref().map(|r| r.inputs[k].clone()) else {
+                continue;
+            };
+            if !self.modifiers[i][k].is_empty() {
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!(
+                            "modifiers of input \"{}\" of node \"{}\" are given twice",
+                            input.nickname, node.id
+                        ),
+                    },
+                    port_at,
+                );
+                continue;
+            }
+            let mut accepted: Vec<Modifier> = Vec::new();
+            for (m_index, &modifier) in list.iter().enumerate() {
+                let at = span
+                    .and_then(|s| s.1.get(m_index))
+                    .map(|r| r.start)
+                    .or(port_at);
+                if !modifier_applies(modifier, input.data_type) {
+                    self.error(
+                        DiagnosticKind::ModifierNotApplicable {
+                            node: node.id.0.clone(),
+                            port: input.nickname.clone(),
+                            modifier,
+                            data_type: input.data_type,
+                        },
+                        at,
+                    );
+                    continue;
+                }
+                let structural = [Modifier::Flatten, Modifier::Graft, Modifier::Simplify];
+                if let Some(&first) = accepted
+                    .iter()
+                    .find(|m| structural.contains(m) && structural.contains(&modifier))
+                {
+                    self.error(
+                        DiagnosticKind::ConflictingModifiers {
+                            node: node.id.0.clone(),
+                            port: input.nickname.clone(),
+                            first,
+                            second: modifier,
+                        },
+                        at,
+                    );
+                    continue;
+                }
+                if !accepted.contains(&modifier) {
+                    accepted.push(modifier);
+                }
+            }
+            accepted.sort_by_key(|m| Modifier::ALL.iter().position(|a| a == m));
+            self.modifiers[i][k] = accepted;
+        }
+        let principal: Vec<String> = self.modifiers[i]
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| m.contains(&Modifier::Principal))
+            .filter_map(|(k, _)| {
+                self.resolved[i]
+                    .as_ref()
+                    .map(|r| r.inputs[k].nickname.clone())
+            })
+            .collect();
+        if principal.len() > 1 {
+            let at = self.node_offset(i);
+            self.error(
+                DiagnosticKind::SeveralPrincipalInputs {
+                    node: node.id.0.clone(),
+                    ports: principal,
+                },
+                at,
+            );
+        }
+    }
+}
+
+/// Registered type ids close to `id`: those the registry suggests by edit distance, then
+/// those that start with `id` (`vector.dot` → `vector.dot_product`) or whose name after the
+/// category is `id` (`dot_product` → `vector.dot_product`); at most three.
+fn suggestions(registry: &NodeRegistry, id: &str) -> Vec<String> {
+    let mut out: Vec<String> = registry
+        .suggestions(id)
+        .into_iter()
+        .map(str::to_owned)
+        .collect();
+    if !id.is_empty() {
+        for t in registry.iter() {
+            let name = t.id.rsplit('.').next().unwrap_or(&t.id);
+            if (t.id.starts_with(id) || name == id) && !out.contains(&t.id) {
+                out.push(t.id.clone());
+            }
+        }
+    }
+    out.truncate(3);
+    out
+}
+
+/// Whether a modifier applies to an input of type `data_type`.
+fn modifier_applies(modifier: Modifier, data_type: DataType) -> bool {
+    match modifier {
+        Modifier::Invert => data_type == DataType::Boolean,
+        Modifier::Degrees => data_type == DataType::Number,
+        // Named rather than matched so that this reads the same before and after the curve
+        // and surface types join `DataType`.
+        Modifier::Reparameterize => matches!(data_type.name(), "Curve" | "Surface"),
+        Modifier::Flatten
+        | Modifier::Graft
+        | Modifier::Simplify
+        | Modifier::Reverse
+        | Modifier::Principal => true,
+    }
+}

@@ -1,0 +1,114 @@
+//! Lifted item functions and typed fast paths, run as loops over typed columns.
+
+use super::*;
+
+/// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
+/// ports and data fit the loop (see `lift`); `None` to take the general path.
+pub(super) fn run_lifted(
+    run: &NodeRun<'_>,
+    data: &[&DataTree],
+    parallel: bool,
+) -> Option<NodeOutput> {
+    let node_type = run.node_type;
+    node_type
+        .lift
+        .iter()
+        .chain(&node_type.fast_paths)
+        .find_map(|lift| run_lift(run, lift, data, parallel))
+}
+
+/// Runs one lifted loop (the node's own or a fast path) when the ports and the data fit it.
+fn run_lift(
+    run: &NodeRun<'_>,
+    lift: &crate::evaluation::lift::Lift,
+    data: &[&DataTree],
+    parallel: bool,
+) -> Option<NodeOutput> {
+    let outputs = &run.node_type.outputs;
+    // A port takes the loop's type when it has that type or is generic (a fast path).
+    let takes =
+        |port: crate::DataType, t: crate::DataType| port == t || port == crate::DataType::Generic;
+    let fits = run.inputs.len() == lift.inputs.len()
+        && run
+            .inputs
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(p, &t)| p.access == Access::Item && !p.optional && takes(p.data_type, t))
+        && outputs.len() == 1
+        && outputs[0].access == Access::Item
+        && takes(outputs[0].data_type, lift.output)
+        && run.matching != Matching::Cross
+        && !run.inputs.is_empty();
+    if !fits {
+        return None;
+    }
+    let iterations = branch_iterations(run, data);
+    // Every branch must hold its port's type (casting made it so; a generic column would not).
+    let typed = iterations.iter().all(|bi| {
+        bi.branches
+            .iter()
+            .zip(&lift.inputs)
+            .all(|(b, &t)| b.is_none_or(|b| b.is_empty() || b.data_type() == t))
+    });
+    if !typed {
+        return None;
+    }
+    let total: usize = iterations.iter().map(|bi| bi.count).sum();
+    let parallel = parallel && total >= PARALLEL_THRESHOLD;
+    let one = |bi: &BranchIteration<'_>| {
+        let branches: Option<Vec<&Branch>> = bi
+            .branches
+            .iter()
+            .map(|b| b.filter(|b| !b.is_empty()))
+            .collect();
+        match branches {
+            // A required input with an empty branch: the output branch is empty (gap logic).
+            None => (Branch::new(lift.output), Vec::new()),
+            Some(_) if bi.count == 0 => (Branch::new(lift.output), Vec::new()),
+            Some(b) => (lift.run)(&b, bi.count, parallel && bi.count >= PARALLEL_THRESHOLD),
+        }
+    };
+    // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
+    // over threads only when items are slow enough for that to pay (as within one branch).
+    let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
+        let started = std::time::Instant::now();
+        let first = one(&iterations[0]);
+        let spread =
+            crate::evaluation::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
+        let rest = &iterations[1..];
+        let mut results = Vec::with_capacity(iterations.len());
+        results.push(first);
+        if spread {
+            results.par_extend(rest.par_iter().map(one));
+        } else {
+            results.extend(rest.iter().map(one));
+        }
+        results
+    } else {
+        iterations.iter().map(one).collect()
+    };
+    // A fast path that left an item to the solve function: run the node the general way.
+    if results.iter().any(|(_, errors)| {
+        errors
+            .iter()
+            .any(|(_, text)| text == crate::evaluation::lift::FALL_BACK)
+    }) {
+        return None;
+    }
+    let mut messages = Vec::new();
+    let mut pieces = Vec::with_capacity(iterations.len());
+    for (bi, (branch, errors)) in iterations.iter().zip(results) {
+        messages.extend(errors.into_iter().map(|(k, text)| Message {
+            node: run.node_id.clone(),
+            level: Level::Error,
+            path: Some(bi.target.clone()),
+            index: Some(k),
+            text,
+        }));
+        pieces.push((bi.target.clone(), branch));
+    }
+    Some(NodeOutput {
+        outputs: vec![DataTree::from_branches(pieces)],
+        messages,
+    })
+}

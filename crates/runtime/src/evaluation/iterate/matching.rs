@@ -1,0 +1,98 @@
+//! Pairing the inputs' branches: the principal input, the target paths with the collision
+//! offset, and the number of iterations in each pairing.
+
+use super::*;
+
+/// The complexity of an input for choosing the principal one (reference §2.4).
+fn complexity(port: &Port, tree: &DataTree) -> i64 {
+    let only_zero = tree.branch_count() == 1 && tree.branches()[0].0 == TreePath::zero();
+    if tree.branch_count() == 0 || only_zero {
+        return -2;
+    }
+    let longest = tree.paths().map(TreePath::len).max().unwrap_or(0) as i64;
+    match port.access {
+        Access::Item => longest,
+        Access::List => longest - 1,
+        Access::Tree => -1,
+    }
+}
+
+fn principal_input(run: &NodeRun<'_>, data: &[&DataTree]) -> Option<usize> {
+    if let Some(p) = run.principal.filter(|&p| p < run.inputs.len()) {
+        return Some(p);
+    }
+    if run.inputs.len() == 1 {
+        return Some(0);
+    }
+    let mut best: Option<(usize, i64)> = None;
+    for (i, port) in run.inputs.iter().enumerate() {
+        let c = complexity(port, data[i]);
+        if best.is_none_or(|(_, b)| c > b) {
+            best = Some((i, c));
+        }
+    }
+    best.map(|(i, _)| i)
+}
+
+pub(super) fn branch_iterations<'a>(
+    run: &NodeRun<'_>,
+    data: &[&'a DataTree],
+) -> Vec<BranchIteration<'a>> {
+    let ports = run.inputs;
+    let n_branches = ports
+        .iter()
+        .zip(data)
+        .filter(|(p, _)| p.access != Access::Tree)
+        .map(|(_, t)| t.branch_count().max(1))
+        .max()
+        .unwrap_or(1);
+    let principal = principal_input(run, data).filter(|&p| ports[p].access != Access::Tree);
+    let has_item = ports.iter().any(|p| p.access == Access::Item);
+    (0..n_branches)
+        .map(|j| {
+            let target = match principal.map(|p| data[p].branches()) {
+                Some(branches) if !branches.is_empty() => {
+                    if j < branches.len() {
+                        branches[j].0.clone()
+                    } else {
+                        let last = &branches[branches.len() - 1].0;
+                        last.with_last_offset((j + 1 - branches.len()) as u32)
+                    }
+                }
+                _ => TreePath::new(vec![j as u32]),
+            };
+            let branches: Vec<Option<&Branch>> = data
+                .iter()
+                .zip(ports)
+                .map(|(t, p)| {
+                    if p.access == Access::Tree || t.branch_count() == 0 {
+                        None
+                    } else {
+                        Some(&t.branches()[j.min(t.branch_count() - 1)].1)
+                    }
+                })
+                .collect();
+            let lengths: Vec<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
+            let item_lengths = ports
+                .iter()
+                .zip(&lengths)
+                .filter(|(p, _)| p.access == Access::Item)
+                .map(|(_, &l)| l);
+            let count = if !has_item {
+                1
+            } else {
+                match run.matching {
+                    Matching::Longest => item_lengths.max().unwrap_or(0),
+                    Matching::Shortest => item_lengths.min().unwrap_or(0),
+                    Matching::Cross => item_lengths.product(),
+                }
+            };
+            BranchIteration {
+                target,
+                branches,
+                lengths,
+                count,
+            }
+        })
+        .collect()
+}
