@@ -119,7 +119,26 @@ pub fn value_json(value: &Value) -> Json {
             }).collect::<Vec<_>>(),
             "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
         }}),
+        Value::Mesh(m) => {
+            let mut mesh = Map::new();
+            mesh.insert("vertices".into(), m.vertices().iter().map(|p| point_json(*p)).collect());
+            // Faces as three or four vertex indices (a triangle does not repeat its last).
+            mesh.insert("faces".into(), m.faces().iter().map(|f| json!(f.corners())).collect());
+            if let Some(n) = m.normals() {
+                mesh.insert("normals".into(), n.iter().map(|v| xyz(v.x, v.y, v.z)).collect());
+            }
+            if let Some(c) = m.colors() {
+                mesh.insert("colours".into(), c.iter().map(|&c| colour_json(c)).collect());
+            }
+            json!({ "mesh": mesh })
+        }
+        Value::Colour(c) => json!({ "colour": colour_json(*c) }),
     }
+}
+
+/// A colour as `[r, g, b, a]`, each 0 to 255.
+fn colour_json(c: locus_kernel::Color) -> Json {
+    json!([c.r, c.g, c.b, c.a])
 }
 
 fn surface_json(s: &NurbsSurface) -> Json {

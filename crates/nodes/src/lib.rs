@@ -132,8 +132,10 @@
 //!   "Addition|add two"`).
 
 pub mod curve;
+pub mod display;
 pub mod expression;
 pub mod maths;
+pub mod mesh;
 pub mod params;
 pub mod sets;
 pub mod surface;
@@ -153,4 +155,6 @@ pub fn register(registry: &mut NodeRegistry) {
     curve::register(registry);
     surface::register(registry);
     sets::register(registry);
+    mesh::register(registry);
+    display::register(registry);
 }

@@ -18,7 +18,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsCurve, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Mesh, MeshFace, MeshingParameters, Interval, Line, NurbsCurve, OrientedBox, Plane, Point3,
     Polyline, Sphere, Transform, Vector3,
 };
 use locus_runtime::{
@@ -217,6 +217,33 @@ fn pool(t: DataType) -> Vec<Value> {
                 )),
             ]
         }
+        DataType::Mesh => {
+            let b = OrientedBox::new(
+                Plane::WORLD_XY,
+                Interval::new(0.0, 1.0),
+                Interval::new(0.0, 1.0),
+                Interval::new(0.0, 1.0),
+            );
+            let brep = Brep::from_box(&b).expect("a box brep");
+            vec![
+                Value::Mesh(Shared::new(
+                    Mesh::from_brep(&brep, &MeshingParameters::default()).expect("a mesh"),
+                )),
+                Value::Mesh(Shared::new(Mesh::default())),
+                // One triangle of zero area.
+                Value::Mesh(Shared::new(
+                    Mesh::new(
+                        vec![Point3::ORIGIN, Point3::ORIGIN, p(1.0, 0.0, 0.0)],
+                        vec![MeshFace::triangle(0, 1, 2)],
+                    )
+                    .expect("a degenerate mesh"),
+                )),
+            ]
+        }
+        DataType::Colour => vec![
+            Value::Colour(Color::rgb(255, 0, 0)),
+            Value::Colour(Color::rgba(0, 0, 0, 0)),
+        ],
         DataType::Generic => [
             DataType::Number,
             DataType::Text,

@@ -2,6 +2,7 @@
 
 pub(crate) mod cast;
 pub(crate) mod cast_geometry;
+pub(crate) mod cast_mesh;
 pub(crate) mod cast_rules;
 pub(crate) mod check;
 pub(crate) mod diagnostic;

@@ -4,5 +4,6 @@
 pub(crate) mod format;
 pub(crate) mod literal;
 pub(crate) mod literal_geometry;
+pub(crate) mod literal_mesh;
 pub(crate) mod syntax;
 pub(crate) mod value_text;

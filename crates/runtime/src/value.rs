@@ -18,7 +18,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox, Plane, Point3,
     Transform, Vector3,
 };
 
@@ -319,6 +319,10 @@ value_types! {
     Surface(Shared<NurbsSurface>) = "Surface", placeholder placeholder_surface();
     /// A boundary representation (faces, edges, vertices), shared.
     Brep(Shared<Brep>) = "Brep", placeholder Shared::new(Brep::default());
+    /// A polygon mesh of triangles and quads, shared.
+    Mesh(Shared<Mesh>) = "Mesh", placeholder Shared::new(Mesh::default());
+    /// A colour with alpha (Grasshopper's Colour, `System.Drawing.Color`).
+    Colour(Color) = "Colour", placeholder Color::BLACK;
 }
 
 /// The curve stored under null curve items: a unit line.

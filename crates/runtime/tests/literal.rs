@@ -210,9 +210,9 @@ fn errors_say_what_was_expected() {
             "invalid cast: Boolean → Point",
         ),
         (
-            "Colour(1, 2, 3)",
+            "Hue(1, 2, 3)",
             DataType::Point,
-            "unknown value type `Colour`",
+            "unknown value type `Hue`",
         ),
         (
             "(1, 2, 3, 4, 5)",
@@ -380,5 +380,38 @@ proptest! {
         let text = write(&tree);
         let back = parse_literal(&text, t);
         prop_assert_eq!(back, Ok(tree), "{}", text);
+    }
+}
+
+#[test]
+fn meshes_and_colours_read_and_write_back() {
+    let text = "(vertices: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], faces: [(0, 1, 2, 3)])";
+    let tree = parse_literal(text, DataType::Mesh).unwrap();
+    let Some(Value::Mesh(m)) = tree.values().next().flatten() else {
+        panic!("not a mesh")
+    };
+    assert_eq!(m.area(), 1.0);
+    // Written back and read again, the mesh is the same.
+    let again = parse_literal(&write(&tree), DataType::Mesh).unwrap();
+    assert_eq!(again, tree);
+    for (text, t, message) in [
+        ("(vertices: [(0, 0, 0)], faces: [(0, 1, 2)])", DataType::Mesh, "names vertex"),
+        ("(vertices: [(0, 0, 0)], faces: [(0, 0)])", DataType::Mesh, "three or four"),
+        ("(vertices: [(0, 0, 0)])", DataType::Mesh, "needs the field `faces`"),
+        ("(r: 256, g: 0, b: 0)", DataType::Colour, "0 to 255"),
+        ("\"#GG0000\"", DataType::Colour, "#RRGGBB"),
+    ] {
+        let e = parse_literal(text, t).unwrap_err();
+        assert!(e.message.contains(message), "{text}: {}", e.message);
+    }
+    for (text, expected) in [
+        ("(r: 255, g: 128, b: 0)", locus_kernel::Color::rgb(255, 128, 0)),
+        ("(1, 2, 3, 4)", locus_kernel::Color::rgba(1, 2, 3, 4)),
+        ("\"#80FF0000\"", locus_kernel::Color::rgba(255, 0, 0, 128)),
+    ] {
+        let tree = parse_literal(text, DataType::Colour).unwrap();
+        let v = tree.values().next().flatten();
+        assert_eq!(v, Some(Value::Colour(expected)), "{text}");
+        assert_eq!(parse_literal(&write(&tree), DataType::Colour).unwrap(), tree);
     }
 }

@@ -5,6 +5,7 @@
 //! openNURBS's `ON_MeshFace` does, so that faces are one fixed-size array and a mesh converts to
 //! and from Rhino's without copying face by face.
 
+mod measure;
 pub(crate) mod parameters;
 mod polyline;
 mod sampling;

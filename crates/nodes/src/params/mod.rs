@@ -9,6 +9,7 @@
 pub mod brep;
 pub mod curve;
 pub mod geometry;
+pub mod mesh;
 pub mod primitive;
 pub mod surface;
 
@@ -21,4 +22,5 @@ pub fn register(registry: &mut NodeRegistry) {
     curve::register(registry);
     surface::register(registry);
     brep::register(registry);
+    mesh::register(registry);
 }

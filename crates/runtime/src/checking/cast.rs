@@ -17,7 +17,7 @@ use std::borrow::Cow;
 use std::fmt;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Curve, Interval, Line, NurbsSurface, OrientedBox, Plane, Point3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox, Plane, Point3,
     Vector3,
 };
 
@@ -25,6 +25,7 @@ use crate::checking::cast_geometry::{
     arc_to_box, brep_to_box, brep_to_surface, circle_plane, circle_to_box, curve_to_arc,
     curve_to_box, curve_to_circle, curve_to_line, line_to_box, point_to_box, surface_to_box,
 };
+use crate::checking::cast_mesh;
 use crate::checking::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
     text_to_boolean, text_to_domain, text_to_integer,
@@ -68,6 +69,10 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Box | Line | Circle | Arc | Curve | Surface | Brep, Text)
             | (Box | Surface, Brep)
             | (Brep, Surface)
+            | (Box | Surface | Brep, Mesh)
+            | (Mesh, Box | Text)
+            | (Colour, Text)
+            | (Text | Integer, Colour)
     )
 }
 
@@ -361,6 +366,14 @@ cast_table! {
     Brep(Shared<Brep>) => Text(String) = |b: &Shared<Brep>| Some(format_value(&Value::Brep(b.clone())));
     Surface(Shared<NurbsSurface>) => Text(String) =
         |s: &Shared<NurbsSurface>| Some(format_value(&Value::Surface(s.clone())));
+    Box(OrientedBox) => Mesh(Shared<Mesh>) = cast_mesh::box_to_mesh;
+    Surface(Shared<NurbsSurface>) => Mesh(Shared<Mesh>) = cast_mesh::surface_to_mesh;
+    Brep(Shared<Brep>) => Mesh(Shared<Mesh>) = cast_mesh::brep_to_mesh;
+    Mesh(Shared<Mesh>) => Box(OrientedBox) = cast_mesh::mesh_to_box;
+    Mesh(Shared<Mesh>) => Text(String) = |m: &Shared<Mesh>| Some(format_value(&Value::Mesh(m.clone())));
+    Colour(Color) => Text(String) = |c: &Color| Some(format_value(&Value::Colour(*c)));
+    Text(String) => Colour(Color) = |t: &String| cast_mesh::text_to_colour(t);
+    Integer(i64) => Colour(Color) = cast_mesh::integer_to_colour;
 }
 
 #[cfg(test)]
@@ -440,7 +453,7 @@ mod tests {
             DataType::Number => vec![Value::Number(1.5), Value::Number(f64::NAN)],
             DataType::Integer => vec![Value::Integer(-3), Value::Integer(0)],
             DataType::Boolean => vec![Value::Boolean(true), Value::Boolean(false)],
-            DataType::Text => ["1", "true", "1,2,3", "0 To 1", "abc", ""]
+            DataType::Text => ["1", "true", "1,2,3", "0 To 1", "abc", "", "#FF8000"]
                 .into_iter()
                 .map(text)
                 .collect(),
@@ -471,6 +484,14 @@ mod tests {
                 Value::Brep(Shared::new(Brep::from_surface(bump()).unwrap())),
                 Value::Brep(Shared::new(Brep::from_box(&unit_box()).unwrap())),
             ],
+            DataType::Mesh => vec![Value::Mesh(Shared::new(
+                Mesh::from_brep(
+                    &Brep::from_box(&unit_box()).unwrap(),
+                    &locus_kernel::MeshingParameters::default(),
+                )
+                .unwrap(),
+            ))],
+            DataType::Colour => vec![Value::Colour(Color::rgb(255, 128, 0))],
             DataType::Generic => Vec::new(),
         }
     }

@@ -185,6 +185,8 @@ fn expectation(data_type: DataType) -> &'static str {
             "a surface (degree: (du, dv), points: [[…], …], knots_u: […], knots_v: […])"
         }
         DataType::Brep => "a box or a surface literal for a B-rep",
+        DataType::Mesh => "a mesh (vertices: [(x, y, z), …], faces: [(a, b, c), …])",
+        DataType::Colour => "a colour (r: 255, g: 0, b: 0), (r, g, b) or \"#RRGGBB\"",
         DataType::Generic => "a value",
     }
 }

@@ -405,6 +405,9 @@ pub(crate) fn struct_type(node: &Node) -> Option<DataType> {
     let Kind::Struct(None, fields) = &node.kind else {
         return None;
     };
+    if let Some(t) = crate::file::literal_mesh::struct_type(fields) {
+        return Some(t);
+    }
     let has = |name: &str| fields.iter().any(|f| f.name == name);
     let degree_pair = fields.iter().any(|f| {
         f.name == "degree" && matches!(&f.value.kind, Kind::Tuple(None, v) if v.len() == 2)
@@ -440,7 +443,7 @@ pub(crate) fn parse_geometry(
         DataType::Curve => curve(node).map(|c| Value::Curve(Shared::new(c))),
         DataType::Surface => surface(node).map(|s| Value::Surface(Shared::new(s))),
         DataType::Brep => brep(node).map(|b| Value::Brep(Shared::new(b))),
-        _ => return None,
+        other => return crate::file::literal_mesh::parse(node, other),
     })
 }
 
@@ -574,6 +577,6 @@ pub(crate) fn geometry_node(value: &Value) -> Option<Result<Node, LiteralError>>
                 span: 0..0,
             }));
         }
-        _ => return None,
+        other => return crate::file::literal_mesh::node(other).map(Ok),
     }))
 }

@@ -206,6 +206,17 @@ pub fn format_value(value: &Value) -> String {
                 "ices"
             }
         ),
+        Value::Mesh(m) => format!("Mesh (V:{} F:{})", m.vertices().len(), m.faces().len()),
+        Value::Colour(c) => format_colour(*c),
+    }
+}
+
+/// A colour as Grasshopper shows it: `R,G,B`, or `A,R,G,B` when it is not opaque.
+pub fn format_colour(c: locus_kernel::Color) -> String {
+    if c.a == 255 {
+        format!("{},{},{}", c.r, c.g, c.b)
+    } else {
+        format!("{},{},{},{}", c.a, c.r, c.g, c.b)
     }
 }
 

@@ -1,0 +1,82 @@
+//! Meshing at the default meshing parameters, in triangles per second: a bicubic NURBS surface
+//! of 100 × 100 spans (a gentle wave, so that most spans need one or two pieces) and a sphere.
+//!
+//! Each is measured against a baseline in the same run: evaluating the surface at as many
+//! points as the mesh has vertices with [`NurbsSurface::points_on_grid`] (the fastest way the
+//! kernel has to put points on a surface), so the ratio says what the sampling, the
+//! triangulation and the normals cost on top of evaluation.
+//!
+//! Run with `cargo bench -p locus-kernel --bench mesh`. Results on the shared 2-core development
+//! machine (load average about 8):
+//!
+//! | benchmark | result |
+//! | --- | --- |
+//! | `mesh/wave_100x100/mesh` | see the commit that added this benchmark |
+//! | `mesh/sphere/mesh` | see the commit that added this benchmark |
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use locus_kernel::{Brep, Mesh, MeshingParameters, NurbsSurface, Point3, Sphere};
+use std::hint::black_box;
+
+/// A bicubic surface with 103 × 103 control points (100 × 100 spans) on a gentle wave.
+fn wave() -> NurbsSurface {
+    let n = 103;
+    let points = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    let (x, y) = (i as f64, j as f64);
+                    Point3::new(x, y, 0.8 * (0.21 * x).sin() * (0.17 * y).cos())
+                })
+                .collect()
+        })
+        .collect();
+    let weights = vec![vec![1.0; n]; n];
+    let mut knots = vec![0.0; 2];
+    knots.extend((0..=100).map(|k| k as f64));
+    knots.extend([100.0; 2]);
+    NurbsSurface::new(3, 3, points, weights, knots.clone(), knots).expect("a valid surface")
+}
+
+fn bench_one(c: &mut Criterion, name: &str, brep: &Brep, surface: &NurbsSurface) {
+    let parameters = MeshingParameters::default();
+    let mesh = Mesh::from_brep(brep, &parameters).expect("meshes");
+    let triangles = mesh.triangle_count() as u64;
+    let vertices = mesh.vertices().len();
+    // The baseline grid: as many points as the mesh has vertices.
+    let side = (vertices as f64).sqrt().ceil() as usize;
+    let (du, dv) = (surface.domain_u(), surface.domain_v());
+    let us: Vec<f64> = (0..side)
+        .map(|i| du.t0 + du.length() * i as f64 / (side - 1) as f64)
+        .collect();
+    let vs: Vec<f64> = (0..side)
+        .map(|i| dv.t0 + dv.length() * i as f64 / (side - 1) as f64)
+        .collect();
+    let mut out = vec![Point3::ORIGIN; side * side];
+    let mut group = c.benchmark_group(format!("mesh/{name}"));
+    group.throughput(Throughput::Elements(triangles));
+    group.sample_size(10);
+    group.bench_function("mesh", |b| {
+        b.iter(|| black_box(Mesh::from_brep(black_box(brep), &parameters).unwrap()))
+    });
+    group.bench_function("baseline_points_on_grid", |b| {
+        b.iter(|| {
+            surface.points_on_grid(&us, &vs, &mut out).unwrap();
+            black_box(&out);
+        })
+    });
+    group.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    let surface = wave();
+    let brep = Brep::from_surface(surface.clone()).expect("a face");
+    bench_one(c, "wave_100x100", &brep, &surface);
+    let sphere = Sphere::new(Point3::ORIGIN, 10.0).unwrap();
+    let brep = Brep::from_sphere(&sphere).unwrap();
+    let surface = sphere.to_nurbs().unwrap();
+    bench_one(c, "sphere", &brep, &surface);
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,31 @@
+//! Grasshopper's Mesh category: turning B-reps into meshes and mesh primitives
+//! ([`primitive`]), measuring meshes ([`analysis`]) and editing them ([`util`]).
+//!
+//! Meshes are the kernel's [`locus_kernel::Mesh`]: triangles and quads with optional vertex
+//! normals and colours. B-reps, surfaces and boxes wired into a Mesh port are meshed with the
+//! kernel's default [`locus_kernel::MeshingParameters`], as Grasshopper meshes them.
+
+pub mod analysis;
+pub mod primitive;
+pub mod util;
+
+use locus_runtime::{NodeError, NodeRegistry, NodeType, Shared, Solve};
+
+use locus_kernel::Mesh;
+
+/// Registers every Mesh node.
+pub fn register(registry: &mut NodeRegistry) {
+    primitive::register(registry);
+    analysis::register(registry);
+    util::register(registry);
+}
+
+/// A node of the Mesh category.
+pub(crate) fn mesh_node(id: &str, name: &str, nickname: &str, subcategory: &str) -> NodeType {
+    NodeType::new(id, name, nickname, "Mesh").subcategory(subcategory)
+}
+
+/// The mesh on item input `input`.
+pub(crate) fn mesh_item(s: &Solve<'_>, input: usize) -> Result<Shared<Mesh>, NodeError> {
+    Ok(s.item::<Shared<Mesh>>(input)?.clone())
+}

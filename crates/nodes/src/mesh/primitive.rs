@@ -1,0 +1,188 @@
+//! Mesh › Primitive and Mesh › Util: Mesh Brep (a B-rep tessellated by the kernel) and Mesh
+//! Sphere (a UV sphere of quads with triangle fans at the poles).
+
+use locus_kernel::{Mesh, MeshFace, MeshingParameters, Plane, Point3};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
+
+use super::mesh_node;
+use crate::surface::brep::brep_item;
+
+/// Id of [`mesh_brep`].
+pub const MESH_BREP: &str = "mesh.mesh_brep";
+/// Id of [`mesh_sphere`].
+pub const MESH_SPHERE: &str = "mesh.mesh_sphere";
+
+/// The most faces Mesh Sphere makes (U × V): 10,000,000.
+pub const MAX_SPHERE_FACES: i64 = 10_000_000;
+
+/// Registers Mesh Brep and Mesh Sphere.
+pub fn register(registry: &mut NodeRegistry) {
+    registry.register(mesh_brep());
+    registry.register(mesh_sphere());
+}
+
+/// Mesh Brep \[Mesh\]: a mesh approximating a B-rep.
+pub fn mesh_brep() -> NodeType {
+    mesh_node(MESH_BREP, "Mesh Brep", "Mesh", "Util")
+        .gh_guid("60e7defa-8b21-4ee1-99aa-a9223d6134ff")
+        .description(
+            "Creates a mesh that approximates a B-rep with the default meshing parameters \
+             (maximum angle between neighbouring normals 3.5°, no chord or edge-length \
+             limit, minimum edge length 1e-4): one mesh for all faces, with vertices shared \
+             along the edges so that a closed B-rep gives a closed, consistently oriented \
+             mesh with normals pointing out. Poles and apexes become fans of triangles. \
+             Grasshopper's Settings input (custom meshing parameters) is not available yet.",
+        )
+        .input(Port::new("Brep", "B", DataType::Brep).doc(
+            "The B-rep to mesh. Boxes and surfaces are taken as B-reps (six faces, one face).",
+        ))
+        .output(Port::new("Mesh", "M", DataType::Mesh).doc("The mesh of the B-rep."))
+        .solve(|s| {
+            let brep = brep_item(s, 0)?;
+            let mesh = Mesh::from_brep(&brep, &MeshingParameters::default())?;
+            s.set(0, Shared::new(mesh));
+            Ok(())
+        })
+}
+
+/// Mesh Sphere \[MSphere\]: a UV sphere mesh.
+pub fn mesh_sphere() -> NodeType {
+    mesh_node(MESH_SPHERE, "Mesh Sphere", "MSphere", "Primitive")
+        .gh_guid("0a391eac-5048-443c-9c1b-f592299b6dd6")
+        .description(
+            "Creates a mesh sphere: U faces around the base plane's Z axis and V faces from \
+             the south pole to the north pole, quads between the rings of parallels and \
+             triangle fans at the poles. The mesh is closed, with outward faces and normals.",
+        )
+        .input(
+            Port::new("Base", "B", DataType::Plane)
+                .default_value(Plane::WORLD_XY)
+                .doc("The base plane: the sphere's centre is its origin, its poles on its Z axis."),
+        )
+        .input(
+            Port::new("Radius", "R", DataType::Number)
+                .default_value(1.0)
+                .doc("The radius of the sphere; must be positive."),
+        )
+        .input(
+            Port::new("U Count", "U", DataType::Integer)
+                .default_value(10i64)
+                .doc("The number of faces around the sphere; at least 3."),
+        )
+        .input(
+            Port::new("V Count", "V", DataType::Integer)
+                .default_value(10i64)
+                .doc("The number of faces from pole to pole; at least 2."),
+        )
+        .output(Port::new("Mesh", "M", DataType::Mesh).doc("The sphere mesh."))
+        .solve(|s| {
+            let plane = *s.item::<Plane>(0)?;
+            let radius = *s.item::<f64>(1)?;
+            let u = *s.item::<i64>(2)?;
+            let v = *s.item::<i64>(3)?;
+            s.set(0, Shared::new(uv_sphere(&plane, radius, u, v)?));
+            Ok(())
+        })
+}
+
+/// A UV sphere on `plane` with `u` faces around and `v` from pole to pole.
+fn uv_sphere(plane: &Plane, radius: f64, u: i64, v: i64) -> Result<Mesh, NodeError> {
+    if !(radius.is_finite() && radius > 0.0) {
+        return Err(format!("the radius must be positive, got {radius}").into());
+    }
+    if u < 3 || v < 2 {
+        return Err(format!("U count must be at least 3 and V count at least 2, got {u} and {v}").into());
+    }
+    if u.saturating_mul(v) > MAX_SPHERE_FACES {
+        return Err(format!("U × V must be at most {MAX_SPHERE_FACES}, got {u} × {v}").into());
+    }
+    if !plane.origin.is_finite() {
+        return Err("the base plane is not finite".into());
+    }
+    let (u, v) = (u as u32, v as u32);
+    let at = |theta: f64, phi: f64| -> Point3 {
+        let (x, y, z) = (phi.cos() * theta.cos(), phi.cos() * theta.sin(), phi.sin());
+        plane.origin + (plane.x_axis * x + plane.y_axis * y + plane.z_axis * z) * radius
+    };
+    let mut vertices = vec![at(0.0, -std::f64::consts::FRAC_PI_2)];
+    for j in 1..v {
+        let phi = -std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * f64::from(j) / f64::from(v);
+        for i in 0..u {
+            vertices.push(at(std::f64::consts::TAU * f64::from(i) / f64::from(u), phi));
+        }
+    }
+    vertices.push(at(0.0, std::f64::consts::FRAC_PI_2));
+    let north = vertices.len() as u32 - 1;
+    let ring = |j: u32, i: u32| 1 + (j - 1) * u + i % u;
+    let mut faces = Vec::new();
+    for i in 0..u {
+        faces.push(MeshFace::triangle(0, ring(1, i + 1), ring(1, i)));
+        for j in 1..v - 1 {
+            faces.push(MeshFace::quad(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i)));
+        }
+        faces.push(MeshFace::triangle(north, ring(v - 1, i), ring(v - 1, i + 1)));
+    }
+    let normals = vertices
+        .iter()
+        .map(|&p| (p - plane.origin).normalize_or_zero())
+        .collect();
+    Ok(Mesh::new(vertices, faces)?.with_normals(normals)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::{assert_clean, assert_error, only};
+    use locus_kernel::{Brep, Interval, OrientedBox};
+    use locus_runtime::{DataTree, NodeCall, Value};
+
+    #[test]
+    fn mesh_brep_meshes_a_box_closed() {
+        let b = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::new(0.0, 2.0),
+            Interval::new(0.0, 3.0),
+            Interval::new(0.0, 4.0),
+        );
+        let brep = Value::Brep(Shared::new(Brep::from_box(&b).unwrap()));
+        let r = NodeCall::new(&mesh_brep()).input(DataTree::from_value(brep)).run();
+        assert_clean(&r);
+        let m = only::<Shared<Mesh>>(&r, 0);
+        assert!(m.is_closed_and_oriented());
+        assert!((m.volume() - 24.0).abs() < 1e-12);
+        // A box wired in is meshed as its B-rep.
+        let r = NodeCall::new(&mesh_brep()).input(DataTree::from_value(Value::Box(b))).run();
+        assert!((only::<Shared<Mesh>>(&r, 0).area() - 52.0).abs() < 1e-12);
+        // Not geometry: a cast error on the input.
+        let r = NodeCall::new(&mesh_brep())
+            .input(DataTree::from_value(Value::Number(1.0)))
+            .run();
+        assert!(!r.messages.is_empty());
+    }
+
+    #[test]
+    fn mesh_sphere_is_closed_with_fans_at_the_poles() {
+        let r = NodeCall::new(&mesh_sphere())
+            .input(DataTree::from_value(Value::Plane(Plane::WORLD_XY)))
+            .input(DataTree::from_value(Value::Number(2.0)))
+            .run();
+        assert_clean(&r);
+        let m = only::<Shared<Mesh>>(&r, 0);
+        assert!(m.is_closed_and_oriented());
+        assert_eq!(m.vertices().len(), 2 + 9 * 10);
+        assert_eq!(m.faces().len(), 100);
+        assert!(m.volume() > 0.0 && m.volume() < 4.0 / 3.0 * std::f64::consts::PI * 8.0);
+        let bad = |radius: f64, u: i64, v: i64| {
+            NodeCall::new(&mesh_sphere())
+                .input(DataTree::from_value(Value::Plane(Plane::WORLD_XY)))
+                .input(DataTree::from_value(Value::Number(radius)))
+                .input(DataTree::from_value(Value::Integer(u)))
+                .input(DataTree::from_value(Value::Integer(v)))
+                .run()
+        };
+        assert_error(&bad(0.0, 10, 10), "radius must be positive");
+        assert_error(&bad(f64::NAN, 10, 10), "radius must be positive");
+        assert_error(&bad(1.0, 2, 10), "at least 3");
+        assert_error(&bad(1.0, i64::MAX, i64::MAX), "at most");
+    }
+}
