@@ -2,9 +2,7 @@
 
 use std::path::Path;
 
-use locus_runtime::{
-    Checked, Diagnostic, Document, Evaluator, Level, NodeRegistry, parse_literal, to_dot,
-};
+use locus_runtime::{Checked, Diagnostic, Document, Evaluator, Level, NodeRegistry, to_dot};
 use serde_json::{Map, Value as Json, json};
 
 use crate::{EXIT_BAD_GRAPH, EXIT_RUNTIME_ERROR, EXIT_USAGE, render};
@@ -86,37 +84,14 @@ pub(crate) fn run(
             return EXIT_USAGE;
         }
     };
-    let plan = &loaded.checked.plan;
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
             eprintln!("locus: --set needs NAME=VALUE, got \"{set}\"");
             return EXIT_USAGE;
         };
-        let name = name.trim();
-        let Some(&(_, node, port)) = plan.inputs.iter().find(|(n, _, _)| n == name) else {
-            let known: Vec<&str> = plan.inputs.iter().map(|(n, _, _)| n.as_str()).collect();
-            eprintln!(
-                "locus: the graph has no input \"{name}\" (its inputs: {})",
-                if known.is_empty() {
-                    "none".to_owned()
-                } else {
-                    known.join(", ")
-                }
-            );
+        if let Err(e) = evaluator.set_input_text(name.trim(), value) {
+            eprintln!("locus: --set: {e}");
             return EXIT_USAGE;
-        };
-        let data_type = plan.nodes[node].inputs[port].port.data_type;
-        match parse_literal(value, data_type) {
-            Ok(tree) => {
-                if let Err(e) = evaluator.set_input(name, tree) {
-                    eprintln!("locus: {e}");
-                    return EXIT_USAGE;
-                }
-            }
-            Err(e) => {
-                eprintln!("locus: --set {name}: {e}");
-                return EXIT_USAGE;
-            }
         }
     }
     evaluator.evaluate();

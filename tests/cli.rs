@@ -57,10 +57,14 @@ fn run_json_has_outputs_and_messages() {
 fn bad_command_lines_exit_with_2() {
     let o = locus(&["run", "graphs/maths_range_remap.ron", "--set", "nope=1"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("the graph has no input \"nope\" (its inputs: N)"));
+    assert!(stderr(&o).contains("--set: unknown input \"nope\" (the graph's inputs are: N)"));
     let o = locus(&["run", "graphs/maths_range_remap.ron", "--set", "N=abc"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--set N:"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--set: bad value for input \"N\": "),
+        "{}",
+        stderr(&o)
+    );
     assert_eq!(locus(&["frobnicate"]).status.code(), Some(2));
     assert_eq!(locus(&["describe", "no.such_node"]).status.code(), Some(2));
 }
