@@ -202,7 +202,7 @@ fn within_budget(run: &NodeRun<'_>, mut out: NodeOutput) -> NodeOutput {
         .zip(&run.node_type.outputs)
         .find_map(|(tree, port)| {
             let entries = tree.item_count().saturating_add(tree.branch_count());
-            (entries > max).then(|| (entries, port))
+            (entries > max).then_some((entries, port))
         });
     match over {
         None => out,
