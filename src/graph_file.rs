@@ -2,12 +2,59 @@
 
 use std::path::Path;
 
+use std::time::Duration;
+
 use locus_runtime::{
-    Checked, Diagnostic, Document, Evaluator, Level, NodeRegistry, parse_literal, to_dot,
+    Checked, DEFAULT_MAX_ITEMS_PER_OUTPUT, DEFAULT_MAX_ITEMS_TOTAL, Diagnostic, Document,
+    Evaluator, Level, Limits, MAX_GRAPH_FILE_BYTES, NodeRegistry, read_graph_file, to_dot,
 };
 use serde_json::{Map, Value as Json, json};
 
-use crate::{EXIT_BAD_GRAPH, EXIT_RUNTIME_ERROR, EXIT_USAGE, render};
+use crate::{EXIT_BAD_GRAPH, EXIT_LIMIT, EXIT_RUNTIME_ERROR, EXIT_USAGE, render};
+
+/// The default of `--max-output-bytes`: 64 MiB.
+pub(crate) const DEFAULT_MAX_OUTPUT_BYTES: u64 = 64 << 20;
+
+/// The run limits of `locus run` (see `docs/limits.md`).
+#[derive(Debug, Clone, clap::Args)]
+pub(crate) struct RunLimits {
+    /// Stop the evaluation after this many seconds (exit code 5; the nodes not run are named).
+    #[arg(long, value_name = "SECONDS")]
+    timeout: Option<f64>,
+    /// The most items and branches one output tree may hold (default 10,000,000); all outputs
+    /// together may hold 5 times as many.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    max_items: Option<u64>,
+    /// Print only this named output (repeatable; default: every output).
+    #[arg(long = "output", value_name = "NAME")]
+    outputs: Vec<String>,
+    /// Stop printing outputs after this many bytes, with a notice (default 64 MiB; 0: no
+    /// limit).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_OUTPUT_BYTES)]
+    max_output_bytes: u64,
+}
+
+impl RunLimits {
+    /// The runtime limits these options ask for.
+    fn limits(&self) -> Result<Limits, String> {
+        let mut limits = Limits::default();
+        if let Some(t) = self.timeout {
+            if !(t.is_finite() && t > 0.0) {
+                return Err(format!(
+                    "--timeout needs a positive number of seconds, got {t}"
+                ));
+            }
+            limits.timeout = Some(Duration::try_from_secs_f64(t).map_err(|e| e.to_string())?);
+        }
+        if let Some(n) = self.max_items {
+            let n = usize::try_from(n).unwrap_or(usize::MAX);
+            limits.max_items_per_output = n;
+            limits.max_items_total =
+                n.saturating_mul(DEFAULT_MAX_ITEMS_TOTAL / DEFAULT_MAX_ITEMS_PER_OUTPUT);
+        }
+        Ok(limits)
+    }
+}
 
 /// A graph file read and checked.
 pub(crate) struct Loaded {
@@ -31,7 +78,8 @@ impl LoadError {
             LoadError::Diagnostics(ds) => {
                 let file = path.display().to_string();
                 for d in ds {
-                    eprintln!("{}", d.display_in(&file));
+                    let text = d.display_in(&file).to_string();
+                    eprintln!("{}", render::for_stream(&text, &std::io::stderr()));
                 }
                 let errors = ds.iter().filter(|d| d.is_error()).count();
                 eprintln!(
@@ -45,7 +93,7 @@ impl LoadError {
 
 /// Reads and checks a graph file.
 pub(crate) fn load(registry: &NodeRegistry, path: &Path) -> Result<Loaded, LoadError> {
-    let text = std::fs::read_to_string(path).map_err(|e| LoadError::Io(e.to_string()))?;
+    let text = read_graph_file(path, MAX_GRAPH_FILE_BYTES).map_err(LoadError::Io)?;
     let document = Document::parse(&text).map_err(LoadError::Diagnostics)?;
     let checked = document.check(registry).map_err(LoadError::Diagnostics)?;
     Ok(Loaded { document, checked })
@@ -55,7 +103,13 @@ pub(crate) fn load(registry: &NodeRegistry, path: &Path) -> Result<Loaded, LoadE
 pub(crate) fn evaluator(checked: &Checked, threads: Option<usize>) -> Result<Evaluator, String> {
     let mut evaluator = Evaluator::new(checked.plan.clone());
     if let Some(n) = threads {
-        evaluator.set_threads(n).map_err(|e| e.to_string())?;
+        let used = evaluator.set_threads(n).map_err(|e| e.to_string())?;
+        if used < n {
+            eprintln!(
+                "locus: warning: --threads {n} is more than {} per core; using {used}",
+                locus_runtime::MAX_THREADS_PER_CORE
+            );
+        }
     }
     Ok(evaluator)
 }
@@ -67,6 +121,7 @@ pub(crate) fn run(
     sets: &[String],
     json: bool,
     threads: Option<usize>,
+    run_limits: &RunLimits,
 ) -> u8 {
     let loaded = match load(registry, path) {
         Ok(l) => l,
@@ -77,7 +132,8 @@ pub(crate) fn run(
     };
     let file = path.display().to_string();
     for w in &loaded.checked.warnings {
-        eprintln!("{}", w.display_in(&file));
+        let text = w.display_in(&file).to_string();
+        eprintln!("{}", render::for_stream(&text, &std::io::stderr()));
     }
     let mut evaluator = match evaluator(&loaded.checked, threads) {
         Ok(e) => e,
@@ -86,62 +142,121 @@ pub(crate) fn run(
             return EXIT_USAGE;
         }
     };
-    let plan = &loaded.checked.plan;
+    match run_limits.limits() {
+        Ok(limits) => evaluator.set_limits(limits),
+        Err(e) => {
+            eprintln!("locus: {e}");
+            return EXIT_USAGE;
+        }
+    }
+    let known: Vec<&str> = evaluator.output_names().collect();
+    if let Some(bad) = run_limits
+        .outputs
+        .iter()
+        .find(|o| !known.contains(&o.as_str()))
+    {
+        eprintln!(
+            "locus: --output: unknown output \"{bad}\" (the graph's outputs are: {})",
+            if known.is_empty() {
+                "none".to_owned()
+            } else {
+                known.join(", ")
+            }
+        );
+        return EXIT_USAGE;
+    }
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
             eprintln!("locus: --set needs NAME=VALUE, got \"{set}\"");
             return EXIT_USAGE;
         };
-        let name = name.trim();
-        let Some(&(_, node, port)) = plan.inputs.iter().find(|(n, _, _)| n == name) else {
-            let known: Vec<&str> = plan.inputs.iter().map(|(n, _, _)| n.as_str()).collect();
-            eprintln!(
-                "locus: the graph has no input \"{name}\" (its inputs: {})",
-                if known.is_empty() {
-                    "none".to_owned()
-                } else {
-                    known.join(", ")
-                }
-            );
+        if let Err(e) = evaluator.set_input_text(name.trim(), value) {
+            eprintln!("locus: --set: {e}");
             return EXIT_USAGE;
-        };
-        let data_type = plan.nodes[node].inputs[port].port.data_type;
-        match parse_literal(value, data_type) {
-            Ok(tree) => {
-                if let Err(e) = evaluator.set_input(name, tree) {
-                    eprintln!("locus: {e}");
-                    return EXIT_USAGE;
-                }
-            }
-            Err(e) => {
-                eprintln!("locus: --set {name}: {e}");
-                return EXIT_USAGE;
-            }
         }
     }
     evaluator.evaluate();
+    let mut limit_hit = false;
+    if let Some(hit) = evaluator.limit_hit() {
+        limit_hit = true;
+        let not_run = evaluator.not_run();
+        match not_run.first() {
+            None => eprintln!("locus: limit: {hit}"),
+            Some(first) => eprintln!(
+                "locus: limit: {hit}; {} node{} not run (the first: \"{first}\")",
+                not_run.len(),
+                if not_run.len() == 1 { " was" } else { "s were" }
+            ),
+        }
+    }
+    let selected: Vec<(&str, &locus_runtime::DataTree)> = evaluator
+        .outputs()
+        .filter(|(name, _)| {
+            run_limits.outputs.is_empty() || run_limits.outputs.iter().any(|o| o == name)
+        })
+        .collect();
+    let max_bytes = match run_limits.max_output_bytes {
+        0 => u64::MAX,
+        n => n,
+    };
+    let mut written: u64 = 0;
+    let mut truncated = false;
     if json {
         let mut outputs = Map::new();
-        for (name, tree) in evaluator.outputs() {
-            outputs.insert(name.to_owned(), render::tree_json(tree));
+        let mut omitted = Vec::new();
+        for (name, tree) in selected {
+            let value = render::tree_json(tree);
+            let size = serde_json::to_string(&value).map_or(0, |t| t.len() as u64);
+            if truncated || written.saturating_add(size) > max_bytes {
+                truncated = true;
+                omitted.push(name.to_owned());
+                continue;
+            }
+            written += size;
+            outputs.insert(name.to_owned(), value);
         }
         let messages: Vec<Json> = evaluator.messages().map(render::message_json).collect();
-        let doc = json!({ "outputs": outputs, "messages": messages });
+        let mut doc = json!({ "outputs": outputs, "messages": messages });
+        if truncated {
+            doc["truncated"] = json!({ "max_output_bytes": max_bytes, "omitted": omitted });
+        }
         out!("{}", serde_json::to_string_pretty(&doc).unwrap_or_default());
     } else {
-        for (name, tree) in evaluator.outputs() {
-            out!("{name}:");
-            out_str!(render::tree_text(tree));
+        for (name, tree) in selected {
+            let text = format!("{name}:\n{}", render::tree_text(tree));
+            let left = max_bytes - written;
+            if text.len() as u64 > left {
+                // Cut at the last whole line that fits.
+                let cut = usize::try_from(left).unwrap_or(usize::MAX).min(text.len());
+                let cut = text[..text.floor_char_boundary(cut)]
+                    .rfind('\n')
+                    .map_or(0, |i| i + 1);
+                out_str!(&text[..cut]);
+                truncated = true;
+                break;
+            }
+            written += text.len() as u64;
+            out_str!(render::for_stream(&text, &std::io::stdout()));
+        }
+        if truncated {
+            out!("(output truncated: more than {max_bytes} bytes; see --max-output-bytes)");
         }
         let messages: Vec<String> = evaluator.messages().map(ToString::to_string).collect();
         if !messages.is_empty() {
             out!("messages:");
             for m in messages {
-                out!("  {m}");
+                out!("  {}", render::for_stream(&m, &std::io::stdout()));
             }
         }
     }
-    if evaluator.messages().any(|m| m.level == Level::Error) {
+    if truncated {
+        eprintln!(
+            "locus: limit: the output was truncated at {max_bytes} bytes (--max-output-bytes)"
+        );
+    }
+    if limit_hit || truncated {
+        EXIT_LIMIT
+    } else if evaluator.messages().any(|m| m.level == Level::Error) {
         EXIT_RUNTIME_ERROR
     } else {
         0
@@ -156,7 +271,8 @@ pub(crate) fn check(registry: &NodeRegistry, paths: &[std::path::PathBuf]) -> u8
             Ok(loaded) => {
                 let file = path.display().to_string();
                 for w in &loaded.checked.warnings {
-                    out!("{}", w.display_in(&file));
+                    let text = w.display_in(&file).to_string();
+                    out!("{}", render::for_stream(&text, &std::io::stdout()));
                 }
                 let graph = loaded.document.graph();
                 out!(
@@ -182,10 +298,10 @@ pub(crate) fn check(registry: &NodeRegistry, paths: &[std::path::PathBuf]) -> u8
 
 /// `locus dot`.
 pub(crate) fn dot(registry: &NodeRegistry, path: &Path) -> u8 {
-    let text = match std::fs::read_to_string(path) {
+    let text = match read_graph_file(path, MAX_GRAPH_FILE_BYTES) {
         Ok(t) => t,
         Err(e) => {
-            LoadError::Io(e.to_string()).report(path);
+            LoadError::Io(e).report(path);
             return EXIT_BAD_GRAPH;
         }
     };

@@ -2,7 +2,8 @@
 //!
 //! Exit codes (also in `docs/cli.md`): 0 success; 1 a node reported an error while running;
 //! 2 the command line is wrong (unknown option, bad `--set` value, unknown input or node);
-//! 3 a graph could not be read or failed checking; 4 `locus test` found failing graphs.
+//! 3 a graph could not be read or failed checking; 4 `locus test` found failing graphs; 5 a run
+//! limit was hit (time, items, output size).
 
 /// Prints a line to stdout; a closed stdout (`locus nodes | head`) ends the program quietly.
 macro_rules! out {
@@ -42,6 +43,8 @@ const EXIT_USAGE: u8 = 2;
 const EXIT_BAD_GRAPH: u8 = 3;
 /// Exit code: at least one graph failed its test.
 const EXIT_TEST_FAILED: u8 = 4;
+/// Exit code: a run limit was hit (time, items, output size); see `docs/limits.md`.
+const EXIT_LIMIT: u8 = 5;
 
 /// locus: a headless node-graph engine for computational design, with Grasshopper's semantics.
 #[derive(Debug, Parser)]
@@ -73,9 +76,12 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
-        /// Number of threads (default: one per core; 1 runs everything on one thread).
-        #[arg(long, value_name = "N")]
-        threads: Option<usize>,
+        /// Number of threads (default: one per core; 1 runs everything on one thread; more than
+        /// 4 per core are capped with a warning).
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+        threads: Option<u32>,
+        #[command(flatten)]
+        limits: graph_file::RunLimits,
     },
     /// Check a graph and print every problem with file:line:column, node and port.
     Check {
@@ -91,8 +97,8 @@ enum Command {
         #[arg(long)]
         bless: bool,
         /// Number of threads.
-        #[arg(long, value_name = "N")]
-        threads: Option<usize>,
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+        threads: Option<u32>,
     },
     /// List the node catalogue, optionally one category.
     Nodes {
@@ -138,13 +144,21 @@ fn main() -> ExitCode {
             set,
             format,
             threads,
-        } => graph_file::run(&registry, &graph, &set, format == Format::Json, threads),
+            limits,
+        } => graph_file::run(
+            &registry,
+            &graph,
+            &set,
+            format == Format::Json,
+            threads.map(|n| n as usize),
+            &limits,
+        ),
         Command::Check { graphs } => graph_file::check(&registry, &graphs),
         Command::Test {
             paths,
             bless,
             threads,
-        } => test_graphs::test(&registry, &paths, bless, threads),
+        } => test_graphs::test(&registry, &paths, bless, threads.map(|n| n as usize)),
         Command::Nodes { category } => catalog::list(&registry, category.as_deref()),
         Command::Describe { node } => catalog::describe(&registry, &node),
         Command::Dot { graph } => graph_file::dot(&registry, &graph),

@@ -207,3 +207,51 @@ mod tests {
         assert_eq!(number_json(-0.0).to_string(), "0.0");
     }
 }
+
+/// Text from a graph made safe for a terminal: control characters other than newline and tab
+/// (ANSI escape sequences start with one) and the bidirectional overrides and isolates that
+/// reorder what is displayed (U+202A–U+202E, U+2066–U+2069) are written as `\u{…}` escapes.
+pub fn terminal_safe(text: &str) -> std::borrow::Cow<'_, str> {
+    let unsafe_char = |c: char| {
+        (c.is_control() && c != '\n' && c != '\t')
+            || ('\u{202a}'..='\u{202e}').contains(&c)
+            || ('\u{2066}'..='\u{2069}').contains(&c)
+    };
+    if !text.chars().any(unsafe_char) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if unsafe_char(c) {
+            let _ = write!(out, "\\u{{{:x}}}", c as u32);
+        } else {
+            out.push(c);
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
+/// `text` made safe with [`terminal_safe`] when `stream` is a terminal, else as it is.
+pub fn for_stream(text: &str, stream: &impl std::io::IsTerminal) -> std::borrow::Cow<'_, str> {
+    if stream.is_terminal() {
+        terminal_safe(text)
+    } else {
+        std::borrow::Cow::Borrowed(text)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn terminal_safe_escapes_ansi_and_bidi_controls() {
+        assert_eq!(terminal_safe("plain\ttext\n"), "plain\ttext\n");
+        assert_eq!(terminal_safe("a\u{1b}[31mred"), "a\\u{1b}[31mred");
+        assert_eq!(
+            terminal_safe("x\u{202e}y\u{2066}z"),
+            "x\\u{202e}y\\u{2066}z"
+        );
+        assert_eq!(terminal_safe("bell\u{7}"), "bell\\u{7}");
+    }
+}

@@ -57,10 +57,14 @@ fn run_json_has_outputs_and_messages() {
 fn bad_command_lines_exit_with_2() {
     let o = locus(&["run", "graphs/maths_range_remap.ron", "--set", "nope=1"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("the graph has no input \"nope\" (its inputs: N)"));
+    assert!(stderr(&o).contains("--set: unknown input \"nope\" (the graph's inputs are: N)"));
     let o = locus(&["run", "graphs/maths_range_remap.ron", "--set", "N=abc"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--set N:"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--set: bad value for input \"N\": "),
+        "{}",
+        stderr(&o)
+    );
     assert_eq!(locus(&["frobnicate"]).status.code(), Some(2));
     assert_eq!(locus(&["describe", "no.such_node"]).status.code(), Some(2));
 }
@@ -204,4 +208,114 @@ fn json_breps_carry_their_faces_edges_and_vertices() {
         assert_eq!(brep["edges"].as_array().map(Vec::len), Some(4));
         assert_eq!(brep["vertices"].as_array().map(Vec::len), Some(4));
     }
+}
+
+/// A graph with one Series of `count` numbers, named `outputs` times (s0, s1, …).
+fn series_graph(name: &str, count: usize, outputs: usize) -> std::path::PathBuf {
+    let named: Vec<String> = (0..outputs).map(|k| format!("\"s{k}\": \"s.S\"")).collect();
+    let text = format!(
+        "(format: 1, nodes: [(id: \"s\", type: \"sets.series\", values: {{\"C\": {count}}})], \
+         outputs: {{{}}})",
+        named.join(", ")
+    );
+    temp_graph(name, &text)
+}
+
+#[test]
+fn run_limits_end_in_exit_code_5_with_the_limit_named() {
+    let text = r#"(format: 1, nodes: [
+        (id: "s", type: "sets.series", values: {"C": 10000}),
+        (id: "x", type: "maths.addition", matching: cross),
+    ], wires: [("s.S", "x.A"), ("s.S", "x.B")], outputs: {"r": "x.R"})"#;
+    let path = temp_graph("cross.ron", text);
+    let started = std::time::Instant::now();
+    let o = locus(&["run", path.to_str().unwrap()]);
+    assert!(started.elapsed() < std::time::Duration::from_secs(20));
+    assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(
+            "locus: limit: node \"x\": cross reference of 10000 (A) × 10000 (B) items at {0} \
+             gives 100000000 iterations"
+        ),
+        "{}",
+        stderr(&o)
+    );
+    // A smaller budget from the command line.
+    let path = series_graph("series.ron", 1000, 1);
+    let o = locus(&["run", path.to_str().unwrap(), "--max-items", "100"]);
+    assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
+    assert!(stderr(&o).contains("above the limit of 100 items per output"));
+}
+
+#[test]
+fn output_selection_and_truncation() {
+    let path = series_graph("two.ron", 3, 2);
+    let o = locus(&["run", path.to_str().unwrap(), "--output", "s1"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("s1:\n") && !stdout(&o).contains("s0:"));
+    let o = locus(&["run", path.to_str().unwrap(), "--output", "nope"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("unknown output \"nope\" (the graph's outputs are: s0, s1)"));
+    // About a gigabyte of text (60 outputs of a million numbers) stops at the byte limit.
+    let path = series_graph("huge.ron", 1_000_000, 60);
+    let started = std::time::Instant::now();
+    let o = locus(&[
+        "run",
+        path.to_str().unwrap(),
+        "--max-output-bytes",
+        "20000000",
+    ]);
+    assert!(started.elapsed() < std::time::Duration::from_secs(60));
+    assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
+    assert!(o.stdout.len() < 20_000_000 + 1000, "{}", o.stdout.len());
+    assert!(
+        stdout(&o).contains("(output truncated: more than 20000000 bytes; see --max-output-bytes)")
+    );
+    assert!(stderr(&o).contains("locus: limit: the output was truncated at 20000000 bytes"));
+    let o = locus(&[
+        "run",
+        path.to_str().unwrap(),
+        "--format",
+        "json",
+        "--output",
+        "s0",
+        "--output",
+        "s1",
+        "--max-output-bytes",
+        "100",
+    ]);
+    assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    assert_eq!(doc["truncated"]["omitted"], serde_json::json!(["s0", "s1"]));
+}
+
+#[test]
+fn devices_fifos_and_bad_thread_counts_are_refused() {
+    let o = locus(&["check", "/dev/zero"]);
+    assert_eq!(o.status.code(), Some(3));
+    assert!(
+        stderr(&o).contains("cannot read /dev/zero: not a regular file"),
+        "{}",
+        stderr(&o)
+    );
+    let fifo = std::env::temp_dir().join(format!("locus-cli-fifo-{}", std::process::id()));
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let o = locus(&["run", fifo.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(3));
+        assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
+        std::fs::remove_file(&fifo).ok();
+    }
+    let path = series_graph("threads.ron", 3, 1);
+    assert_eq!(
+        locus(&["run", path.to_str().unwrap(), "--threads", "0"])
+            .status
+            .code(),
+        Some(2)
+    );
+    let o = locus(&["run", path.to_str().unwrap(), "--threads", "100000"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stderr(&o).contains("--threads 100000 is more than 4 per core; using"));
+    let o = locus(&["run", path.to_str().unwrap(), "--timeout", "-1"]);
+    assert_eq!(o.status.code(), Some(2));
 }

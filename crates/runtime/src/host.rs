@@ -45,9 +45,11 @@ fn first_error(d: &[Diagnostic]) -> String {
 /// when it is not a valid graph.
 pub fn load_file(path: impl AsRef<Path>, registry: &NodeRegistry) -> Result<Checked, LoadError> {
     let path = path.as_ref();
-    let text = std::fs::read_to_string(path).map_err(|e| LoadError::Io {
-        path: path.to_owned(),
-        message: e.to_string(),
+    let text = crate::read_graph_file(path, crate::MAX_GRAPH_FILE_BYTES).map_err(|message| {
+        LoadError::Io {
+            path: path.to_owned(),
+            message,
+        }
     })?;
     Document::parse(&text)
         .and_then(|doc| doc.check(registry))
@@ -96,6 +98,16 @@ impl Evaluator {
         let Some(data_type) = self.input_type(name) else {
             return Err(self.unknown_input(name));
         };
+        if literal.len() > crate::MAX_TEXT_BYTES {
+            return Err(EvalError::BadValue {
+                name: name.to_owned(),
+                message: format!(
+                    "the text is too long ({} bytes; the limit is {} bytes)",
+                    literal.len(),
+                    crate::MAX_TEXT_BYTES
+                ),
+            });
+        }
         let tree = parse_literal(literal, data_type).map_err(|e| EvalError::BadValue {
             name: name.to_owned(),
             message: e.message,

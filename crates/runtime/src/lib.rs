@@ -13,6 +13,9 @@
 //! ([`Evaluator::node_messages`]). After an input changes, the next evaluation runs only the
 //! nodes downstream of it ([`Evaluator::last_run`] says which). Evaluators, plans and registries
 //! are `Send + Sync`, so a host can hold many graphs and evaluate them on several threads.
+//! Every run is bounded by [`Limits`] ([`Evaluator::set_limits`]: a timeout, a [`CancelToken`],
+//! item budgets counted before anything is allocated); [`Evaluator::limit_hit`] and
+//! [`Evaluator::not_run`] say what stopped and what did not run (`docs/limits.md`).
 //!
 //! ```
 //! use locus_runtime::{DataTree, DataType, EvalError, Evaluator, NodeRegistry, NodeType, Port};
@@ -156,6 +159,7 @@ mod evaluation;
 mod file;
 mod graph;
 mod host;
+mod limits;
 mod message;
 mod node;
 mod plan;
@@ -182,6 +186,10 @@ pub use crate::graph::{
     Wire,
 };
 pub use crate::host::{LoadError, load_file};
+pub use crate::limits::{
+    CancelToken, DEFAULT_MAX_ITEMS_PER_OUTPUT, DEFAULT_MAX_ITEMS_TOTAL, LimitHit, Limits,
+    MAX_GRAPH_FILE_BYTES, MAX_TEXT_BYTES, MAX_THREADS_PER_CORE, read_graph_file,
+};
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,

@@ -68,16 +68,50 @@ impl NodeRegistry {
         self.types.is_empty()
     }
 
-    /// Ids close to `id` (same suffix or small edit distance), for "did you mean" hints.
+    /// Registered ids close to `id`, for "did you mean" hints, at most three, best first:
+    /// - the ids of types whose display name or nickname is `id` in any case, or whose name
+    ///   with spaces as underscores is the part of the id after the category (`"Divide Curve"`
+    ///   → `curve.divide_curve`);
+    /// - ids within an edit distance of 3, closest first;
+    /// - ids that start with `id` (`vector.dot` → `vector.dot_product`) or whose part after
+    ///   the category is `id` (`dot_product` → `vector.dot_product`), in registration order.
     pub fn suggestions(&self, id: &str) -> Vec<&str> {
-        let mut scored: Vec<(usize, &str)> = self
+        const MAX: usize = 3;
+        let wanted = id.trim();
+        if wanted.is_empty() {
+            return Vec::new();
+        }
+        let snake = wanted.to_lowercase().replace([' ', '-'], "_");
+        let tail = |t: &NodeType| t.id.rsplit('.').next().unwrap_or(&t.id).to_owned();
+        let named = self.types.iter().filter(|t| {
+            t.name.eq_ignore_ascii_case(wanted)
+                || t.nickname == wanted
+                || tail(t).eq_ignore_ascii_case(&snake)
+        });
+        let mut scored: Vec<(usize, &NodeType)> = self
             .types
             .iter()
-            .map(|t| (edit_distance(&t.id, id), t.id.as_str()))
+            .map(|t| (edit_distance(&t.id, wanted), t))
             .filter(|(d, _)| *d <= 3)
             .collect();
-        scored.sort();
-        scored.into_iter().take(3).map(|(_, s)| s).collect()
+        scored.sort_by(|a, b| a.0.cmp(&b.0).then_with(|| a.1.id.cmp(&b.1.id)));
+        let prefixed = self
+            .types
+            .iter()
+            .filter(|t| t.id.starts_with(wanted) || tail(t) == wanted);
+        let mut out: Vec<&str> = Vec::new();
+        for t in named
+            .chain(scored.into_iter().map(|(_, t)| t))
+            .chain(prefixed)
+        {
+            if out.len() == MAX {
+                break;
+            }
+            if !out.contains(&t.id.as_str()) {
+                out.push(&t.id);
+            }
+        }
+        out
     }
 }
 
@@ -133,5 +167,36 @@ mod tests {
                 .is_none()
         );
         assert_eq!(registry.len(), 1);
+    }
+
+    fn registry() -> NodeRegistry {
+        let mut registry = NodeRegistry::new();
+        for (id, name, nick) in [
+            ("vector.dot_product", "Dot Product", "Dot"),
+            ("curve.divide_curve", "Divide Curve", "Divide"),
+            ("maths.addition", "Addition", "A+B"),
+        ] {
+            registry.register(NodeType::new(id, name, nick, "Test"));
+        }
+        registry
+    }
+
+    #[test]
+    fn suggests_close_ids_then_prefixes() {
+        let r = registry();
+        assert_eq!(r.suggestions("maths.additon"), ["maths.addition"]);
+        assert_eq!(r.suggestions("vector.dot"), ["vector.dot_product"]);
+        assert_eq!(r.suggestions("dot_product"), ["vector.dot_product"]);
+        assert!(r.suggestions("surface.loft").is_empty());
+        assert!(r.suggestions("").is_empty());
+    }
+
+    #[test]
+    fn suggests_the_id_for_a_display_name_or_nickname() {
+        let r = registry();
+        assert_eq!(r.suggestions("Divide Curve"), ["curve.divide_curve"]);
+        assert_eq!(r.suggestions("divide curve"), ["curve.divide_curve"]);
+        assert_eq!(r.suggestions("A+B"), ["maths.addition"]);
+        assert_eq!(r.suggestions("Dot Product"), ["vector.dot_product"]);
     }
 }

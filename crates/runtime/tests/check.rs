@@ -52,6 +52,18 @@ fn unknown_node_type_suggests_close_ids() {
 }
 
 #[test]
+fn a_display_name_as_node_type_suggests_the_id() {
+    let text = "(format: 1, nodes: [(id: \"d\", type: \"Dot Product\")])";
+    assert_eq!(
+        errors(text),
+        [
+            "g.ron:1:37: error: unknown node type \"Dot Product\" on node \"d\" (did you mean \
+          \"vector.dot_product\"?)"
+        ]
+    );
+}
+
+#[test]
 fn unknown_ports_list_the_valid_ones() {
     let text = r#"(format: 1, nodes: [
   (id: "d", type: "vector.dot_product", values: {"A": (1, 0, 0), "C": (0, 1, 0)}),

@@ -15,14 +15,19 @@ use crate::{
 /// The input tree a node sees: `raw` (wired, set or given data) with the port's modifiers
 /// applied and every item cast to the port's type. Failed casts become nulls with an error
 /// message naming the port, path and item index.
+///
+/// # Errors
+/// The item-budget error when a graft would make more than `max_items` items and branches
+/// (checked before grafting).
 pub(crate) fn prepare_input<'a>(
     node: &NodeId,
     input: &PlanInput,
     raw: Option<Cow<'a, DataTree>>,
     messages: &mut Vec<Message>,
-) -> Cow<'a, DataTree> {
+    max_items: usize,
+) -> Result<Cow<'a, DataTree>, String> {
     let Some(mut tree) = raw else {
-        return Cow::Owned(DataTree::new());
+        return Ok(Cow::Owned(DataTree::new()));
     };
     for modifier in [
         Modifier::Flatten,
@@ -32,6 +37,17 @@ pub(crate) fn prepare_input<'a>(
     ] {
         if !input.modifiers.contains(&modifier) {
             continue;
+        }
+        if modifier == Modifier::Graft {
+            let entries = tree.item_count().saturating_mul(2);
+            if entries > max_items {
+                return Err(format!(
+                    "grafting input {} would make {} branches ({entries} items and branches), \
+                     above the limit of {max_items} items per output",
+                    input.port.nickname,
+                    tree.item_count()
+                ));
+            }
         }
         let t = tree.to_mut();
         match modifier {
@@ -70,7 +86,7 @@ pub(crate) fn prepare_input<'a>(
     if per_item(Modifier::Reparameterize) {
         reparameterize(node, input, tree.to_mut(), messages);
     }
-    tree
+    Ok(tree)
 }
 
 /// Replaces every item of type `T` by `f(item)`, keeping nulls.

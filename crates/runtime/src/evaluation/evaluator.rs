@@ -13,8 +13,9 @@ use std::sync::Arc;
 use rayon::prelude::*;
 
 use crate::evaluation::collect;
-use crate::evaluation::iterate::{NodeOutput, NodeRun, run_node};
-use crate::{DataTree, Level, Message, NodeError, NodeId, Plan, Prepared};
+use crate::evaluation::iterate::{NodeLimit, NodeOutput, NodeRun, run_node};
+use crate::limits::{Budget, Watch, thread_cap};
+use crate::{DataTree, Level, LimitHit, Limits, Message, NodeError, NodeId, Plan, Prepared};
 
 /// Why a host request could not be carried out.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -42,7 +43,7 @@ pub enum EvalError {
         /// What is wrong with the text.
         message: String,
     },
-    /// A thread pool could not be built.
+    /// A thread pool could not be built, or zero threads were asked for.
     #[error("cannot start {threads} threads: {reason}")]
     ThreadPool {
         /// The number of threads asked for.
@@ -95,6 +96,14 @@ pub struct Evaluator {
     last_run: Vec<usize>,
     /// For each node, its input ports (as the solve function sees them).
     ports: Vec<Vec<crate::Port>>,
+    limits: Limits,
+    /// The first limit the last evaluation hit.
+    limit_hit: Option<LimitHit>,
+    /// The nodes the last evaluation did not run because it stopped early.
+    not_run: Vec<usize>,
+    /// For each node, the entries (items plus branches) its outputs hold, and their sum.
+    held: Vec<usize>,
+    held_total: usize,
 }
 
 impl Evaluator {
@@ -152,16 +161,55 @@ impl Evaluator {
             depth,
             threads: Threads::Global,
             last_run: Vec::new(),
+            limits: Limits::default(),
+            limit_hit: None,
+            not_run: Vec::new(),
+            held: vec![0; n],
+            held_total: 0,
         }
     }
 
+    /// Sets the limits of the next evaluations (time, cancellation, item budget).
+    pub fn set_limits(&mut self, limits: Limits) {
+        self.limits = limits;
+    }
+
+    /// The limits of the evaluations.
+    pub fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    /// The first limit the last evaluation hit, if any: a timeout or cancellation (the
+    /// evaluation stopped; [`not_run`](Self::not_run) lists the nodes it did not run), or a
+    /// node above the item budget (that node got no outputs and an error message).
+    pub fn limit_hit(&self) -> Option<&LimitHit> {
+        self.limit_hit.as_ref()
+    }
+
+    /// The ids of the nodes the last evaluation did not run because a time limit or a
+    /// cancellation stopped it (their outputs are empty; the next evaluation runs them).
+    pub fn not_run(&self) -> Vec<&NodeId> {
+        self.not_run
+            .iter()
+            .map(|&i| &self.plan.nodes[i].id)
+            .collect()
+    }
+
     /// Limits evaluation to `threads` threads (1 runs everything on the calling thread).
+    /// Counts above [`MAX_THREADS_PER_CORE`](crate::MAX_THREADS_PER_CORE) × the cores are
+    /// capped to that; the count used is returned (a host warns when it is less than asked).
     ///
     /// # Errors
-    /// [`EvalError::ThreadPool`] when the pool cannot be created.
-    pub fn set_threads(&mut self, threads: usize) -> Result<(), EvalError> {
+    /// [`EvalError::ThreadPool`] when `threads` is 0 or the pool cannot be created.
+    pub fn set_threads(&mut self, threads: usize) -> Result<usize, EvalError> {
+        let threads = threads.min(thread_cap());
         self.threads = match threads {
-            0 => Threads::Global,
+            0 => {
+                return Err(EvalError::ThreadPool {
+                    threads,
+                    reason: "at least one thread is needed".to_owned(),
+                });
+            }
             1 => Threads::Serial,
             n => Threads::Pool(Arc::new(
                 rayon::ThreadPoolBuilder::new()
@@ -173,7 +221,7 @@ impl Evaluator {
                     })?,
             )),
         };
-        Ok(())
+        Ok(threads)
     }
 
     /// The plan being evaluated.
@@ -290,32 +338,128 @@ impl Evaluator {
         for &i in &dirty {
             waves[self.depth[i]].push(i);
         }
-        self.last_run = dirty;
-        for wave in waves {
+        let budget = Budget {
+            max_items: self.limits.max_items_per_output,
+            watch: Watch::start(&self.limits),
+        };
+        self.limit_hit = None;
+        self.not_run.clear();
+        self.last_run.clear();
+        for (w, wave) in waves.iter().enumerate() {
             if wave.is_empty() {
                 continue;
             }
-            for &i in &wave {
+            if let Some(hit) = budget.watch.check() {
+                self.stop(hit, &waves[w..]);
+                return;
+            }
+            for &i in wave {
                 self.ensure_prepared(i);
                 // The old outputs are replaced below; dropping them first lets their memory be
                 // reused for the new ones (no node reads its own outputs).
-                for tree in &mut self.states[i].outputs {
-                    *tree = Arc::new(DataTree::new());
-                }
+                self.release(i);
             }
             let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
                 wave.par_iter()
-                    .map(|&i| (i, self.run(i, parallel)))
+                    .map(|&i| (i, self.run(i, parallel, &budget)))
                     .collect()
             } else {
-                wave.iter().map(|&i| (i, self.run(i, parallel))).collect()
+                wave.iter()
+                    .map(|&i| (i, self.run(i, parallel, &budget)))
+                    .collect()
             };
-            for (i, out) in results {
-                let state = &mut self.states[i];
-                state.outputs = out.outputs.into_iter().map(Arc::new).collect();
-                state.messages = out.messages;
-                state.dirty = false;
+            self.last_run.extend_from_slice(wave);
+            let mut stopped = None;
+            for (i, mut out) in results {
+                match out.limit.take() {
+                    Some(NodeLimit::Watch) => {
+                        let hit = budget.watch.check().unwrap_or(LimitHit::Cancelled);
+                        out.messages
+                            .push(self.node_message(i, format!("stopped: {hit}")));
+                        stopped = Some(hit);
+                    }
+                    Some(NodeLimit::Items(detail)) => self.hit(LimitHit::Items {
+                        node: self.plan.nodes[i].id.clone(),
+                        detail,
+                    }),
+                    None => {}
+                }
+                self.store(i, out);
             }
+            if let Some(hit) = stopped {
+                self.stop(hit, &waves[w + 1..]);
+                return;
+            }
+        }
+    }
+
+    /// Records the first limit hit of an evaluation.
+    fn hit(&mut self, hit: LimitHit) {
+        if self.limit_hit.is_none() {
+            self.limit_hit = Some(hit);
+        }
+    }
+
+    /// Stops the evaluation: the nodes of the remaining waves are not run (empty outputs, still
+    /// dirty for the next evaluation).
+    fn stop(&mut self, hit: LimitHit, waves: &[Vec<usize>]) {
+        self.hit(hit);
+        for &i in waves.iter().flatten() {
+            self.release(i);
+            self.states[i].messages.clear();
+            self.not_run.push(i);
+        }
+    }
+
+    /// Empties a node's outputs.
+    fn release(&mut self, i: usize) {
+        for tree in &mut self.states[i].outputs {
+            *tree = Arc::new(DataTree::new());
+        }
+        self.held_total -= self.held[i];
+        self.held[i] = 0;
+    }
+
+    /// Keeps a node's new outputs, unless they take the graph above its total item budget.
+    fn store(&mut self, i: usize, mut out: NodeOutput) {
+        let entries = out
+            .outputs
+            .iter()
+            .map(|t| t.item_count().saturating_add(t.branch_count()))
+            .fold(0usize, usize::saturating_add);
+        let max = self.limits.max_items_total;
+        if self.held_total.saturating_add(entries) > max {
+            let detail = format!(
+                "its outputs would hold {entries} items and branches, taking the graph to {} \
+                 (above the limit of {max} items in all outputs)",
+                self.held_total.saturating_add(entries)
+            );
+            for tree in &mut out.outputs {
+                *tree = DataTree::new();
+            }
+            out.messages.push(self.node_message(i, detail.clone()));
+            self.hit(LimitHit::Items {
+                node: self.plan.nodes[i].id.clone(),
+                detail,
+            });
+        } else {
+            self.held[i] = entries;
+            self.held_total += entries;
+        }
+        let state = &mut self.states[i];
+        state.outputs = out.outputs.into_iter().map(Arc::new).collect();
+        state.messages = out.messages;
+        state.dirty = false;
+    }
+
+    /// An error message of node `i` about the whole node.
+    fn node_message(&self, i: usize, text: String) -> Message {
+        Message {
+            node: self.plan.nodes[i].id.clone(),
+            level: Level::Error,
+            path: None,
+            index: None,
+            text,
         }
     }
 
@@ -340,12 +484,13 @@ impl Evaluator {
     }
 
     /// Runs one node on the current outputs of its sources.
-    fn run(&self, i: usize, parallel: bool) -> NodeOutput {
+    fn run(&self, i: usize, parallel: bool, budget: &Budget) -> NodeOutput {
         let node = &self.plan.nodes[i];
         let n_outputs = node.node_type.outputs.len();
         let empty = || NodeOutput {
             outputs: (0..n_outputs).map(|_| DataTree::new()).collect(),
             messages: Vec::new(),
+            limit: None,
         };
         if node.disabled {
             return empty();
@@ -372,7 +517,18 @@ impl Evaluator {
         let mut missing = Vec::new();
         for (k, input) in node.inputs.iter().enumerate() {
             let raw = self.raw_input(i, k);
-            let collected = collect::prepare_input(&node.id, input, raw, &mut messages);
+            let collected =
+                match collect::prepare_input(&node.id, input, raw, &mut messages, budget.max_items)
+                {
+                    Ok(tree) => tree,
+                    Err(detail) => {
+                        let mut out = empty();
+                        out.messages = messages;
+                        out.messages.push(message(Level::Error, detail.clone()));
+                        out.limit = Some(NodeLimit::Items(detail));
+                        return out;
+                    }
+                };
             if !input.port.optional && collected.item_count() == 0 && collected.branch_count() == 0
             {
                 missing.push(input.port.nickname.clone());
@@ -398,6 +554,7 @@ impl Evaluator {
             matching: node.matching,
             principal: node.principal_input(),
             prepared,
+            budget,
         };
         let refs: Vec<&DataTree> = data.iter().map(|d| &**d).collect();
         match catch_unwind(AssertUnwindSafe(|| run_node(&run, &refs, parallel))) {
@@ -682,7 +839,7 @@ mod tests {
     #[test]
     fn thread_count_does_not_change_results() {
         let mut results = Vec::new();
-        for threads in [1, 2, 0] {
+        for threads in [1, 2, 4] {
             let mut e = Evaluator::new(plan());
             e.set_threads(threads).unwrap();
             e.set_input(

@@ -25,6 +25,7 @@
 use rayon::prelude::*;
 
 use crate::evaluation::solve::{Cursor, OutputSink};
+use crate::limits::{Budget, CHECK_EVERY};
 use crate::{
     Access, Branch, DataTree, Level, Matching, Message, NodeId, NodeType, Port, Prepared, Solve,
     TreePath, Value,
@@ -52,6 +53,17 @@ pub(crate) struct NodeRun<'a> {
     pub(crate) matching: Matching,
     pub(crate) principal: Option<usize>,
     pub(crate) prepared: Option<&'a Prepared>,
+    /// The item budget, deadline and cancellation.
+    pub(crate) budget: &'a Budget,
+}
+
+/// Why a node stopped before its end: its outputs are empty.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum NodeLimit {
+    /// The deadline passed or the evaluation was cancelled.
+    Watch,
+    /// The outputs would exceed the item budget (the detail names the counts).
+    Items(String),
 }
 
 /// The outputs and messages of one node.
@@ -59,6 +71,8 @@ pub(crate) struct NodeRun<'a> {
 pub(crate) struct NodeOutput {
     pub(crate) outputs: Vec<DataTree>,
     pub(crate) messages: Vec<Message>,
+    /// Set when a limit stopped the node.
+    pub(crate) limit: Option<NodeLimit>,
 }
 
 type RawMessage = (Level, Option<TreePath>, Option<usize>, String);
@@ -82,6 +96,7 @@ struct Task {
 struct Segment {
     pieces: Vec<Vec<(TreePath, Branch)>>,
     messages: Vec<RawMessage>,
+    limit: Option<NodeLimit>,
 }
 
 /// Runs a node on its collected input trees (one per input port, already modified and cast).
@@ -93,7 +108,10 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
     let segments = if NodeType::solves_once(run.inputs) {
         vec![solve_once(run, data)]
     } else {
-        let iterations = branch_iterations(run, data);
+        let iterations = match branch_iterations(run, data) {
+            Ok(iterations) => iterations,
+            Err(detail) => return limited(run, NodeLimit::Items(detail)),
+        };
         let has_item = run.inputs.iter().any(|p| p.access == Access::Item);
         let mut tasks = Vec::new();
         let total: usize = iterations.iter().map(|bi| bi.count).sum();
@@ -139,7 +157,64 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
             tasks.iter().map(run_one).collect()
         }
     };
-    stitch(run.node_id, outputs, segments)
+    let out = stitch(run.node_id, outputs, segments);
+    within_budget(run, out)
+}
+
+/// A node's output with empty trees and the error of the limit that stopped it.
+pub(crate) fn limited(run: &NodeRun<'_>, limit: NodeLimit) -> NodeOutput {
+    let mut messages = Vec::new();
+    if let NodeLimit::Items(detail) = &limit {
+        messages.push(Message {
+            node: run.node_id.clone(),
+            level: Level::Error,
+            path: None,
+            index: None,
+            text: detail.clone(),
+        });
+    }
+    NodeOutput {
+        outputs: run
+            .node_type
+            .outputs
+            .iter()
+            .map(|_| DataTree::new())
+            .collect(),
+        messages,
+        limit: Some(limit),
+    }
+}
+
+/// The output itself, or the item-budget error when one of its trees holds more entries
+/// (items plus branches) than one output may.
+fn within_budget(run: &NodeRun<'_>, mut out: NodeOutput) -> NodeOutput {
+    if let Some(limit) = out.limit.take() {
+        // A task stopped: no output, the messages so far and the limit's own.
+        let mut stopped = limited(run, limit);
+        out.messages.append(&mut stopped.messages);
+        stopped.messages = out.messages;
+        return stopped;
+    }
+    let max = run.budget.max_items;
+    let over = out
+        .outputs
+        .iter()
+        .zip(&run.node_type.outputs)
+        .find_map(|(tree, port)| {
+            let entries = tree.item_count().saturating_add(tree.branch_count());
+            (entries > max).then_some((entries, port))
+        });
+    match over {
+        None => out,
+        Some((entries, port)) => limited(
+            run,
+            NodeLimit::Items(format!(
+                "output {} would hold {entries} items and branches, above the limit of {max} \
+                 items per output",
+                port.nickname
+            )),
+        ),
+    }
 }
 
 /// Joins the segments' pieces into one tree per output. A generic output's branches whose
@@ -148,7 +223,11 @@ fn stitch(node_id: &NodeId, outputs: &[Port], segments: Vec<Segment>) -> NodeOut
     let n_outputs = outputs.len();
     let mut pieces: Vec<Vec<(TreePath, Branch)>> = (0..n_outputs).map(|_| Vec::new()).collect();
     let mut messages = Vec::new();
+    let mut limit = None;
     for segment in segments {
+        if limit.is_none() {
+            limit = segment.limit;
+        }
         for (o, p) in segment.pieces.into_iter().enumerate() {
             if pieces[o].is_empty() {
                 pieces[o] = p;
@@ -183,6 +262,7 @@ fn stitch(node_id: &NodeId, outputs: &[Port], segments: Vec<Segment>) -> NodeOut
             })
             .collect(),
         messages,
+        limit,
     }
 }
 
@@ -194,6 +274,7 @@ fn new_sinks(outputs: &[Port]) -> Vec<OutputSink> {
             data_type: p.data_type,
             pieces: Vec::new(),
             set: false,
+            listed: 0,
         })
         .collect()
 }
@@ -230,6 +311,7 @@ fn solve_once(run: &NodeRun<'_>, data: &[&DataTree]) -> Segment {
     Segment {
         pieces: sinks.into_iter().map(|s| s.pieces).collect(),
         messages,
+        limit: None,
     }
 }
 
@@ -263,7 +345,13 @@ fn run_task(
     let item_inputs: Vec<usize> = (0..ports.len())
         .filter(|&i| ports[i].access == Access::Item)
         .collect();
+    let max_items = run.budget.max_items;
+    let mut limit = None;
     for k in task.start..task.end {
+        if (k - task.start) % CHECK_EVERY == CHECK_EVERY - 1 && run.budget.watch.check().is_some() {
+            limit = Some(NodeLimit::Watch);
+            break;
+        }
         let mut skip = false;
         let mut empty_gap = false;
         // Cross reference: decompose k over the item inputs, the first varying fastest.
@@ -342,10 +430,19 @@ fn run_task(
             }
             sink.set = false;
         }
+        if let Some(sink) = sinks.iter().find(|s| s.listed > max_items) {
+            limit = Some(NodeLimit::Items(format!(
+                "list outputs would hold more than {} items and branches (at {} iteration {k}), \
+                 above the limit of {max_items} items per output",
+                sink.listed, bi.target
+            )));
+            break;
+        }
     }
     Segment {
         pieces: sinks.into_iter().map(|s| s.pieces).collect(),
         messages,
+        limit,
     }
 }
 

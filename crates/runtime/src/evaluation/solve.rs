@@ -30,6 +30,9 @@ pub(crate) struct OutputSink {
     pub(crate) pieces: Vec<(TreePath, Branch)>,
     /// Whether the current iteration set this output.
     pub(crate) set: bool,
+    /// An upper bound of the items and branches set as lists and trees so far (for the item
+    /// budget; item outputs are counted before the node runs).
+    pub(crate) listed: usize,
 }
 
 /// The context of one iteration: what the node reads and writes.
@@ -350,6 +353,7 @@ impl<'a> Solve<'a> {
         if sink.set {
             sink.pieces.pop();
         }
+        sink.listed = sink.listed.saturating_add(branch.len() + 1);
         sink.pieces.push((path, branch));
         sink.set = true;
     }
@@ -359,6 +363,9 @@ impl<'a> Solve<'a> {
         let Some(sink) = self.sink(output) else {
             return;
         };
+        sink.listed = sink
+            .listed
+            .saturating_add(tree.item_count() + tree.branch_count());
         sink.pieces.extend(tree.into_branches());
         sink.set = true;
     }

@@ -321,7 +321,7 @@ impl Parser<'_> {
             };
             self.pos += c.len_utf8();
             match c {
-                '"' => return Ok(out),
+                '"' => return self.within_text_limit(start, out),
                 '\\' => {
                     let esc_start = self.pos - 1;
                     let Some(e) = self.text[self.pos..].chars().next() else {
@@ -349,6 +349,20 @@ impl Parser<'_> {
                 c => out.push(c),
             }
         }
+    }
+
+    /// The string read from `start`, or an error there when it is longer than
+    /// [`MAX_TEXT_BYTES`](crate::MAX_TEXT_BYTES) (literal texts, formulas and masks).
+    fn within_text_limit(&mut self, start: usize, text: String) -> Result<String, SyntaxError> {
+        if text.len() <= crate::MAX_TEXT_BYTES {
+            return Ok(text);
+        }
+        self.pos = start;
+        Err(self.error(&format!(
+            "the string is too long ({} bytes; the limit is {} bytes)",
+            text.len(),
+            crate::MAX_TEXT_BYTES
+        )))
     }
 
     /// Reads the `{XXXX}` of a `\u{XXXX}` escape (the `\u` is already consumed).
@@ -395,7 +409,7 @@ impl Parser<'_> {
         match self.text[body..].find(&closing) {
             Some(len) => {
                 self.pos = body + len + closing.len();
-                Ok(self.text[body..body + len].to_owned())
+                self.within_text_limit(start, self.text[body..body + len].to_owned())
             }
             None => {
                 self.pos = start;

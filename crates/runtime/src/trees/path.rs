@@ -208,9 +208,14 @@ impl FromStr for TreePath {
             if part.is_empty() {
                 return Err(err("empty index"));
             }
-            let index: u32 = part
-                .parse()
-                .map_err(|_| err("indices must be non-negative integers"))?;
+            let index: u32 = part.parse().map_err(|_| {
+                // A run of digits that does not fit is too large, not negative.
+                if part.bytes().all(|b| b.is_ascii_digit()) {
+                    err("an index is too large (the largest is 4294967295)")
+                } else {
+                    err("indices must be non-negative integers")
+                }
+            })?;
             indices.push(index);
         }
         Ok(Self::new(indices))
@@ -250,6 +255,16 @@ mod tests {
         for bad in ["{}", "{-1}", "{0;;1}", "{0", "{a}", ""] {
             assert!(bad.parse::<TreePath>().is_err(), "{bad}");
         }
+        let reason = |t: &str| t.parse::<TreePath>().unwrap_err().reason;
+        assert_eq!(reason("{-1}"), "indices must be non-negative integers");
+        assert_eq!(
+            reason("{0;4294967296}"),
+            "an index is too large (the largest is 4294967295)"
+        );
+        assert_eq!(
+            "{4294967295}".parse::<TreePath>().unwrap().indices(),
+            [u32::MAX]
+        );
     }
 
     #[test]

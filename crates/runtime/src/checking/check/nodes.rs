@@ -35,7 +35,12 @@ impl<'a> Checker<'a> {
             let resolved = match self.registry.get(&node.node_type) {
                 Some(node_type) => Some(self.resolve_inputs(i, node_type)),
                 None => {
-                    let suggestions = suggestions(self.registry, &node.node_type);
+                    let suggestions = self
+                        .registry
+                        .suggestions(&node.node_type)
+                        .into_iter()
+                        .map(str::to_owned)
+                        .collect();
                     let at = self
                         .map()
                         .and_then(|m| m.nodes.get(i))
@@ -339,27 +344,6 @@ impl<'a> Checker<'a> {
             );
         }
     }
-}
-
-/// Registered type ids close to `id`: those the registry suggests by edit distance, then
-/// those that start with `id` (`vector.dot` → `vector.dot_product`) or whose name after the
-/// category is `id` (`dot_product` → `vector.dot_product`); at most three.
-fn suggestions(registry: &NodeRegistry, id: &str) -> Vec<String> {
-    let mut out: Vec<String> = registry
-        .suggestions(id)
-        .into_iter()
-        .map(str::to_owned)
-        .collect();
-    if !id.is_empty() {
-        for t in registry.iter() {
-            let name = t.id.rsplit('.').next().unwrap_or(&t.id);
-            if (t.id.starts_with(id) || name == id) && !out.contains(&t.id) {
-                out.push(t.id.clone());
-            }
-        }
-    }
-    out.truncate(3);
-    out
 }
 
 /// Whether a modifier applies to an input of type `data_type`.

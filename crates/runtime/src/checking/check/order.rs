@@ -18,7 +18,9 @@ impl<'a> Checker<'a> {
             s.sort_unstable();
             s.dedup();
         }
-        let mut components: Vec<Vec<usize>> = petgraph::algo::tarjan_scc(&g)
+        // Kosaraju's algorithm walks with an explicit stack; petgraph's Tarjan recurses once per
+        // node of a path and overflowed the stack on a 100,000-node chain.
+        let mut components: Vec<Vec<usize>> = petgraph::algo::kosaraju_scc(&g)
             .into_iter()
             .map(|c| {
                 let mut c: Vec<usize> = c.into_iter().map(NodeIndex::index).collect();

@@ -42,7 +42,8 @@ fn run_lift(
     if !fits {
         return None;
     }
-    let iterations = branch_iterations(run, data);
+    // Above the item budget: the general path reports it.
+    let iterations = branch_iterations(run, data).ok()?;
     // Every branch must hold its port's type (casting made it so; a generic column would not).
     let typed = iterations.iter().all(|bi| {
         bi.branches
@@ -110,5 +111,6 @@ fn run_lift(
     Some(NodeOutput {
         outputs: vec![DataTree::from_branches(pieces)],
         messages,
+        limit: None,
     })
 }

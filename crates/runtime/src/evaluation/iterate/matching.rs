@@ -37,8 +37,9 @@ fn principal_input(run: &NodeRun<'_>, data: &[&DataTree]) -> Option<usize> {
 pub(super) fn branch_iterations<'a>(
     run: &NodeRun<'_>,
     data: &[&'a DataTree],
-) -> Vec<BranchIteration<'a>> {
+) -> Result<Vec<BranchIteration<'a>>, String> {
     let ports = run.inputs;
+    let max_items = run.budget.max_items;
     let n_branches = ports
         .iter()
         .zip(data)
@@ -46,53 +47,98 @@ pub(super) fn branch_iterations<'a>(
         .map(|(_, t)| t.branch_count().max(1))
         .max()
         .unwrap_or(1);
+    // Every branch pairing makes at least one branch in each output: count them before
+    // allocating anything per pairing.
+    if n_branches > max_items {
+        return Err(format!(
+            "{n_branches} branch pairings would give {n_branches} branches in each output, above \
+             the limit of {max_items} items per output"
+        ));
+    }
     let principal = principal_input(run, data).filter(|&p| ports[p].access != Access::Tree);
     let has_item = ports.iter().any(|p| p.access == Access::Item);
-    (0..n_branches)
-        .map(|j| {
-            let target = match principal.map(|p| data[p].branches()) {
-                Some(branches) if !branches.is_empty() => {
-                    if j < branches.len() {
-                        branches[j].0.clone()
-                    } else {
-                        let last = &branches[branches.len() - 1].0;
-                        last.with_last_offset((j + 1 - branches.len()) as u32)
-                    }
+    let mut total = n_branches;
+    let mut out = Vec::with_capacity(n_branches);
+    for j in 0..n_branches {
+        let target = match principal.map(|p| data[p].branches()) {
+            Some(branches) if !branches.is_empty() => {
+                if j < branches.len() {
+                    branches[j].0.clone()
+                } else {
+                    let last = &branches[branches.len() - 1].0;
+                    last.with_last_offset((j + 1 - branches.len()) as u32)
                 }
-                _ => TreePath::new(vec![j as u32]),
-            };
-            let branches: Vec<Option<&Branch>> = data
-                .iter()
-                .zip(ports)
-                .map(|(t, p)| {
-                    if p.access == Access::Tree || t.branch_count() == 0 {
-                        None
-                    } else {
-                        Some(&t.branches()[j.min(t.branch_count() - 1)].1)
-                    }
-                })
-                .collect();
-            let lengths: Vec<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
-            let item_lengths = ports
-                .iter()
-                .zip(&lengths)
-                .filter(|(p, _)| p.access == Access::Item)
-                .map(|(_, &l)| l);
-            let count = if !has_item {
-                1
-            } else {
-                match run.matching {
-                    Matching::Longest => item_lengths.max().unwrap_or(0),
-                    Matching::Shortest => item_lengths.min().unwrap_or(0),
-                    Matching::Cross => item_lengths.product(),
-                }
-            };
-            BranchIteration {
-                target,
-                branches,
-                lengths,
-                count,
             }
-        })
-        .collect()
+            _ => TreePath::new(vec![j as u32]),
+        };
+        let branches: Vec<Option<&Branch>> = data
+            .iter()
+            .zip(ports)
+            .map(|(t, p)| {
+                if p.access == Access::Tree || t.branch_count() == 0 {
+                    None
+                } else {
+                    Some(&t.branches()[j.min(t.branch_count() - 1)].1)
+                }
+            })
+            .collect();
+        let lengths: Vec<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
+        let mut item_lengths = ports
+            .iter()
+            .zip(&lengths)
+            .filter(|(p, _)| p.access == Access::Item)
+            .map(|(_, &l)| l);
+        let count = if !has_item {
+            Some(1)
+        } else {
+            match run.matching {
+                Matching::Longest => Some(item_lengths.max().unwrap_or(0)),
+                Matching::Shortest => Some(item_lengths.min().unwrap_or(0)),
+                Matching::Cross => item_lengths.try_fold(1usize, usize::checked_mul),
+            }
+        };
+        let within = count
+            .and_then(|c| total.checked_add(c))
+            .filter(|&t| t <= max_items);
+        let Some(new_total) = within else {
+            return Err(too_many(run, &target, &lengths, count, total, max_items));
+        };
+        total = new_total;
+        out.push(BranchIteration {
+            target,
+            branches,
+            lengths,
+            count: count.unwrap_or(0),
+        });
+    }
+    Ok(out)
+}
+
+/// The error for iterations above the budget, naming the matching mode and the counts.
+fn too_many(
+    run: &NodeRun<'_>,
+    target: &TreePath,
+    lengths: &[usize],
+    count: Option<usize>,
+    before: usize,
+    max_items: usize,
+) -> String {
+    let items: Vec<String> = run
+        .inputs
+        .iter()
+        .zip(lengths)
+        .filter(|(p, _)| p.access == Access::Item)
+        .map(|(p, l)| format!("{l} ({})", p.nickname))
+        .collect();
+    let mode = match run.matching {
+        Matching::Longest => "longest list",
+        Matching::Shortest => "shortest list",
+        Matching::Cross => "cross reference",
+    };
+    let count = count.map_or_else(|| "more than 2^64".to_owned(), |c| c.to_string());
+    format!(
+        "{mode} of {} items at {target} gives {count} iterations (after {before} items and \
+         branches before it), above the limit of {max_items} items per output",
+        items.join(" × ")
+    )
 }

@@ -68,6 +68,7 @@ fn run(node: &NodeType, matching: Matching, principal: Option<usize>, inputs: &[
         matching,
         principal,
         prepared: None,
+        budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
     let parallel = run_node(&r, &refs, true);
@@ -302,6 +303,7 @@ fn failing_iterations_leave_nulls_and_messages() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        budget: &crate::limits::Budget::default(),
     };
     let out = run_node(&r, &refs, false);
     assert_eq!(show(&out.outputs[0]), "{0}:[1,null,1]");
@@ -328,6 +330,7 @@ fn large_branches_give_identical_results_in_parallel() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
     let parallel = run_node(&r, &refs, true);
