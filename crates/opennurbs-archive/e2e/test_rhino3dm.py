@@ -207,11 +207,17 @@ def test_locus_decodes_what_rhino3dm_encodes(name):
         assert_close(expected, got, tol=0)
 
 
-def test_polycurve_is_read_as_one_nurbs_curve_through_the_same_points():
+def polycurve():
+    """A line, an arc (on the circle of radius 1 about (2, 0, 0)) and a cubic, joined."""
     pc = r.PolyCurve()
     pc.Append(r.Line(r.Point3d(0, 0, 0), r.Point3d(1, 0, 0)))
     pc.Append(r.Arc(r.Point3d(1, 0, 0), r.Point3d(2, 1, 0), r.Point3d(3, 0, 0)))
     pc.Append(r.NurbsCurve.Create(False, 3, [r.Point3d(3, 0, 0), r.Point3d(4, -1, 0), r.Point3d(5, 1, 1), r.Point3d(6, 0, 0)]))
+    return pc
+
+
+def test_polycurve_is_read_as_one_nurbs_curve_through_the_same_points():
+    pc = polycurve()
     assert pc.IsValid
     got = locus_decode(pc.Encode())
     assert got["type"] == "nurbs_curve" and got["degree"] == 3
