@@ -256,3 +256,52 @@ def test_errors_are_reported_not_crashed():
     ]
     answers = locus([{"op": "decode", "encoded": b} for b in bad])
     assert all("error" in a for a in answers), answers
+
+
+BREP_CASES = {
+    "brep_box": {"type": "brep", "kind": "box", "min": [0, 0, 0], "max": [1, 2, 3]},
+    "brep_sphere": {"type": "brep", "kind": "sphere", "center": [1, 2, 3], "radius": 2.0},
+    "brep_capped_cylinder": {
+        "type": "brep",
+        "kind": "cylinder",
+        "plane": {"origin": [0, 0, 1], "x": [1, 0, 0], "y": [0, 1, 0]},
+        "radius": 1.5,
+        "height": 4.0,
+    },
+    "brep_trimmed_face_with_hole": {
+        "type": "brep",
+        "kind": "planar",
+        "outer": [[0, 0, 0], [4, 0, 0], [5, 3, 0], [0, 3, 0]],
+        "holes": [[[1, 1, 0], [2, 1, 0], [2, 2, 0], [1, 2, 0]]],
+    },
+    "brep_rational_surface": {
+        "type": "brep",
+        "kind": "surface",
+        "surface": LOCUS_CASES["surface_rational_cylinder_patch"],
+    },
+}
+
+
+@pytest.mark.parametrize("name", sorted(BREP_CASES))
+def test_rhino3dm_decodes_locus_breps_into_valid_equal_breps(name):
+    desc = BREP_CASES[name]
+    (full,) = locus([{"op": "describe", "geometry": desc}])
+    full = full["geometry"]
+    encoded = locus_encode(desc)
+    b = r.CommonObject.Decode(encoded)
+    assert isinstance(b, r.Brep)
+    # openNURBS's own validator: topology, indices, trim/edge/vertex agreement, iso flags.
+    valid, log = b.IsValidWithLog
+    assert valid, log
+    assert (len(b.Faces), len(b.Edges), len(b.Vertices)) == (full["faces"], full["edges"], full["vertices"])
+    assert sum(f.OuterLoop.TrimCount for f in b.Faces) <= full["trims"]
+    assert b.IsSolid == full["solid"]
+    assert_close([_xyz(b.Vertices[i].Location) for i in range(len(b.Vertices))], full["vertex_points"], tol=0)
+    for i in range(len(b.Faces)):
+        assert_close(describe(b.Faces[i].UnderlyingSurface().ToNurbsSurface()), full["surfaces"][i], tol=1e-15)
+    for i in range(len(b.Edges)):
+        assert_close(describe(b.Edges[i].ToNurbsCurve()), full["edge_curves"][i], tol=1e-15)
+    box = b.GetBoundingBox()
+    pts = [p for s in full["surfaces"] for p in s["points"]]
+    for k, (lo, hi) in enumerate(zip(_xyz(box.Min), _xyz(box.Max))):
+        assert min(p[k] for p in pts) <= lo + 1e-12 and hi - 1e-12 <= max(p[k] for p in pts)

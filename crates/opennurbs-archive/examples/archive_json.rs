@@ -4,6 +4,8 @@
 //! Reads a JSON list of requests on standard input and writes the list of answers:
 //! - `{"op": "encode", "geometry": DESCRIPTION}` → `{"encoded": COMMON_OBJECT_JSON}`
 //! - `{"op": "decode", "encoded": COMMON_OBJECT_JSON}` → `{"geometry": DESCRIPTION}`
+//! - `{"op": "describe", "geometry": DESCRIPTION}` → `{"geometry": FULL_DESCRIPTION}` (what
+//!   locus builds from a short description, e.g. a B-rep's faces and edges)
 //!
 //! A request that fails answers `{"error": "..."}`. DESCRIPTION is the plain form of
 //! `tests/common/describe.rs`.
@@ -20,6 +22,10 @@ fn answer(req: &Value) -> Value {
                 Ok(enc) => json!({ "encoded": enc }),
                 Err(e) => json!({ "error": e.to_string() }),
             },
+            Err(e) => json!({ "error": e }),
+        },
+        Some("describe") => match describe::build(&req["geometry"]) {
+            Ok(g) => json!({ "geometry": describe::describe(&g) }),
             Err(e) => json!({ "error": e }),
         },
         Some("decode") => match locus_opennurbs_archive::decode_json(&req["encoded"]) {

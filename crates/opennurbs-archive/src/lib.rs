@@ -29,7 +29,9 @@
 //! - `ON_NurbsCurve` 1.1 and `ON_NurbsSurface` 1.0 ([`nurbs`]): dimension, rational flag,
 //!   orders, control point counts, knots in Rhino's form (`|knots| = |points| + degree − 1`)
 //!   and control points, *homogeneous* for rational geometry (`w·x, w·y, w·z, w`);
-//! - `ON_LineCurve`, `ON_PolylineCurve`, `ON_ArcCurve` and `ON_PolyCurve` ([`curve`]).
+//! - `ON_LineCurve`, `ON_PolylineCurve`, `ON_ArcCurve` and `ON_PolyCurve` ([`curve`]);
+//! - `ON_Brep` 3.3 ([`brep`]): arrays of trim curves, edge curves and surfaces (object records),
+//!   vertices, edges, trims, loops and faces that refer to each other by index.
 //!
 //! # What is supported
 //! | class | write | read, as |
@@ -41,8 +43,9 @@
 //! | `ON_ArcCurve` | [`Curve::Arc`], [`Curve::Circle`] | [`Curve::Arc`] or [`Curve::Circle`] |
 //! | `ON_PolyCurve` | — | one [`Curve::Nurbs`]: the segments joined at a common degree |
 //! | `ON_NurbsSurface` | [`NurbsSurface`] | [`NurbsSurface`] |
+//! | `ON_Brep` | every [`Brep`] (NURBS faces, trims, edges; exact, tolerance 0) | — (not yet: [`Error::UnsupportedClass`]) |
 //!
-//! Other classes (B-reps, extrusions, SubDs, points, annotations, ...) are reported as
+//! Other classes (extrusions, SubDs, points, annotations, ...) are reported as
 //! [`Error::UnsupportedClass`] with their class id and name. User data is skipped on read and
 //! never written. Archives of 3dm version 5 and older (4-byte chunk lengths) are refused.
 //!
@@ -55,6 +58,7 @@
 //! wrong and at which byte.
 
 pub mod binary;
+pub mod brep;
 pub mod curve;
 mod error;
 pub mod mesh;
@@ -66,7 +70,7 @@ pub use crate::error::{Error, Result};
 pub use crate::object::ClassId;
 
 use base64::Engine as _;
-pub use locus_kernel::{Curve, Mesh, NurbsSurface};
+pub use locus_kernel::{Brep, Curve, Mesh, NurbsSurface};
 use serde_json::{Value, json};
 
 /// The `version` field of CommonObject JSON (the serialisation's own version).
@@ -87,6 +91,8 @@ pub enum Geometry {
     Curve(Curve),
     /// A NURBS surface (`ON_NurbsSurface`).
     Surface(NurbsSurface),
+    /// A boundary representation (`ON_Brep`; written only, for now).
+    Brep(Brep),
 }
 
 impl Geometry {
@@ -99,6 +105,7 @@ impl Geometry {
             Self::Curve(Curve::Polyline { .. }) => "Rhino.Geometry.PolylineCurve",
             Self::Curve(Curve::Arc { .. } | Curve::Circle { .. }) => "Rhino.Geometry.ArcCurve",
             Self::Surface(_) => "Rhino.Geometry.NurbsSurface",
+            Self::Brep(_) => "Rhino.Geometry.Brep",
         }
     }
 }

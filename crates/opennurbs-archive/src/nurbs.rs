@@ -10,12 +10,15 @@ use locus_kernel::{NurbsCurve, NurbsSurface, Point3};
 use crate::binary::{Reader, Writer};
 use crate::{Error, Result};
 
-/// Writes a rational control point homogeneously, or a non-rational one as `x, y, z`.
-fn write_cv(w: &mut Writer, p: Point3, weight: f64, rational: bool) {
+/// Writes a rational control point homogeneously, or a non-rational one as `x, y, z`; with
+/// `dim` 2 the `z` coordinate is left out.
+fn write_cv(w: &mut Writer, p: Point3, weight: f64, rational: bool, dim: usize) {
+    let c = [p.x, p.y, p.z];
+    for &x in &c[..dim] {
+        w.f64(if rational { x * weight } else { x });
+    }
     if rational {
-        w.f64s(&[p.x * weight, p.y * weight, p.z * weight, weight]);
-    } else {
-        w.f64s(&[p.x, p.y, p.z]);
+        w.f64(weight);
     }
 }
 
@@ -92,9 +95,19 @@ fn read_knots(
 /// # Errors
 /// [`Error::TooLarge`] for more than `i32::MAX` control points.
 pub fn write_curve(w: &mut Writer, c: &NurbsCurve) -> Result<()> {
+    write_curve_dim(w, c, 3)
+}
+
+/// Writes `ON_NurbsCurve` class data of dimension `dim` (2 for B-rep trim curves, which keep
+/// `u` in `x` and `v` in `y`; `z` is dropped).
+///
+/// # Errors
+/// As [`write_curve`].
+pub fn write_curve_dim(w: &mut Writer, c: &NurbsCurve, dim: usize) -> Result<()> {
+    let dim = dim.clamp(2, 3);
     let rational = c.is_rational();
     w.version(1, 1);
-    w.i32(3);
+    w.count(dim)?;
     w.i32(i32::from(rational));
     w.count(c.order())?;
     w.count(c.point_count())?;
@@ -105,7 +118,7 @@ pub fn write_curve(w: &mut Writer, c: &NurbsCurve) -> Result<()> {
     w.f64s(c.knots());
     w.count(c.point_count())?;
     for (&p, &wt) in c.points().iter().zip(c.weights()) {
-        write_cv(w, p, wt, rational);
+        write_cv(w, p, wt, rational, dim);
     }
     // 1.1: "SubD friendly" tag.
     w.bool(false);
@@ -173,7 +186,7 @@ pub fn write_surface(w: &mut Writer, s: &NurbsSurface) -> Result<()> {
     w.count(s.points().len())?;
     // The kernel stores point (i, j) at i·count_v + j, the order openNURBS writes them in.
     for (&p, &wt) in s.points().iter().zip(s.weights()) {
-        write_cv(w, p, wt, rational);
+        write_cv(w, p, wt, rational, 3);
     }
     Ok(())
 }

@@ -1,7 +1,7 @@
 //! Object records: the class id, the class data and the end mark around one object.
 
 use crate::binary::{Reader, Writer, tcode};
-use crate::{Error, Geometry, Result, Versions, curve, mesh, nurbs};
+use crate::{Error, Geometry, Result, Versions, brep, curve, mesh, nurbs};
 
 /// An openNURBS class id (`ON_ClassId::Uuid`), in the usual text byte order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -142,6 +142,7 @@ pub(crate) fn write_object(w: &mut Writer, geometry: &Geometry) -> Result<()> {
         Geometry::Surface(s) => {
             write_record(w, ClassId::NURBS_SURFACE, |w| nurbs::write_surface(w, s))
         }
+        Geometry::Brep(b) => write_record(w, ClassId::BREP, |w| brep::write(w, b)),
     }
 }
 

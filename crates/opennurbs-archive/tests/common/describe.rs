@@ -2,8 +2,8 @@
 //! tests and the `archive_json` example that the rhino3dm end-to-end tests drive.
 
 use locus_kernel::{
-    Arc, Circle, Color, Curve, Interval, Line, Mesh, MeshFace, NurbsCurve, NurbsSurface, Plane,
-    Point3, Polyline, Vector3,
+    Arc, Brep, Circle, Color, Curve, Cylinder, Interval, Line, Mesh, MeshFace, NurbsCurve,
+    NurbsSurface, OrientedBox, Plane, Point3, Polyline, Sphere, Vector3,
 };
 use locus_opennurbs_archive::Geometry;
 use serde_json::{Value, json};
@@ -64,6 +64,20 @@ pub fn describe(g: &Geometry) -> Value {
             "weights": s.weights(),
             "knots_u": s.knots_u(),
             "knots_v": s.knots_v(),
+        }),
+        Geometry::Brep(b) => json!({
+            "type": "brep",
+            "faces": b.faces().len(),
+            "edges": b.edges().len(),
+            "vertices": b.vertices().len(),
+            "loops": b.loops().len(),
+            "trims": b.trims().len(),
+            "solid": b.is_solid(),
+            "area": b.area().ok(),
+            "volume": if b.is_solid() { b.volume().ok() } else { None },
+            "vertex_points": b.vertices().iter().map(|v| p(v.point)).collect::<Vec<_>>(),
+            "surfaces": b.faces().iter().map(|f| describe(&Geometry::Surface(f.surface.clone()))).collect::<Vec<_>>(),
+            "edge_curves": b.edges().iter().map(|e| describe(&Geometry::Curve(Curve::Nurbs(e.curve.clone())))).collect::<Vec<_>>(),
         }),
     }
 }
@@ -218,6 +232,40 @@ pub fn build(d: &Value) -> Result<Geometry, String> {
                 )
                 .map_err(e)?,
             )
+        }
+        "brep" => {
+            let b = match d["kind"].as_str().unwrap_or("") {
+                "box" => {
+                    let (lo, hi) = (pt(&d["min"])?, pt(&d["max"])?);
+                    Brep::from_box(&OrientedBox::new(
+                        Plane::WORLD_XY,
+                        Interval::new(lo.x, hi.x),
+                        Interval::new(lo.y, hi.y),
+                        Interval::new(lo.z, hi.z),
+                    ))
+                }
+                "sphere" => Sphere::new(pt(&d["center"])?, num(&d["radius"], "radius")?)
+                    .and_then(|s| Brep::from_sphere(&s)),
+                "cylinder" => Cylinder::new(
+                    plane_of(&d["plane"])?,
+                    num(&d["radius"], "radius")?,
+                    num(&d["height"], "height")?,
+                )
+                .and_then(|c| Brep::from_cylinder(&c, true)),
+                "planar" => {
+                    let holes = match d["holes"].as_array() {
+                        Some(hs) => hs.iter().map(pts).collect::<Result<Vec<_>, _>>()?,
+                        None => Vec::new(),
+                    };
+                    Brep::from_planar_polylines(&pts(&d["outer"])?, &holes, 1e-9)
+                }
+                "surface" => match build(&d["surface"])? {
+                    Geometry::Surface(s) => Brep::from_surface(s),
+                    _ => return Err("a surface B-rep needs a nurbs_surface".into()),
+                },
+                other => return Err(format!("unknown B-rep kind {other:?}")),
+            };
+            Geometry::Brep(b.map_err(e)?)
         }
         other => return Err(format!("unknown geometry type {other:?}")),
     })
