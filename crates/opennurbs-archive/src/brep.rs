@@ -11,13 +11,19 @@
 //! the kernel's order, so every index is the element's own. Trim curves are written as 2-D
 //! curves (`x = u`, `y = v`), as openNURBS requires.
 //!
-//! Reading B-reps is not supported yet: the kernel has no validated constructor from parts.
+//! On read, each edge and trim takes the part of its curve that its proxy domain selects, in
+//! its direction, on its own domain; faces on `ON_NurbsSurface` and `ON_PlaneSurface` are
+//! read (other surface classes are refused with their class name); back references and trim
+//! kinds are recomputed and checked by the kernel's `Brep::from_parts`.
 
-use locus_kernel::{Brep, LoopKind, Point3, TrimKind};
+use locus_kernel::{
+    Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, Interval, LoopKind, NurbsCurve,
+    Point3, TrimKind,
+};
 
-use crate::binary::{Writer, tcode};
-use crate::object::{ClassId, write_record};
-use crate::{Result, nurbs};
+use crate::binary::{Reader, Writer, tcode};
+use crate::object::{ClassId, read_object, write_record};
+use crate::{Error, Geometry, Result, Versions, nurbs};
 
 /// The tolerance written for vertices, edges and trims: 0, since the kernel's B-reps are built
 /// exactly (edges and trims meet their vertices exactly). openNURBS's validator requires a
@@ -212,4 +218,279 @@ pub fn write(w: &mut Writer, b: &Brep) -> Result<()> {
     w.bool(false); // no region topology
     w.end_chunk();
     Ok(())
+}
+
+/// Turns an openNURBS index into an index into an array of `len` items.
+fn index(i: i32, len: usize, what: &str) -> Result<usize> {
+    usize::try_from(i)
+        .ok()
+        .filter(|&u| u < len)
+        .ok_or_else(|| Error::Invalid(format!("{what} {i} is out of range (there are {len})")))
+}
+
+fn read_indices(r: &mut Reader<'_>, what: &'static str) -> Result<Vec<i32>> {
+    let n = r.count(4, what)?;
+    (0..n).map(|_| r.i32(what)).collect()
+}
+
+fn read_interval(r: &mut Reader<'_>, what: &'static str) -> Result<Interval> {
+    Ok(Interval::new(r.f64(what)?, r.f64(what)?))
+}
+
+/// Opens an array chunk (anonymous, version 1.x) and returns its minor version and count.
+fn begin_array(r: &mut Reader<'_>, item_size: usize, what: &'static str) -> Result<(u8, usize)> {
+    r.expect_chunk(tcode::ANONYMOUS_CHUNK, what)?;
+    let (major, minor) = r.version(what)?;
+    if major != 1 {
+        return Err(Error::Invalid(format!(
+            "{what} version {major}.{minor} is not supported"
+        )));
+    }
+    Ok((minor, r.count(item_size, what)?))
+}
+
+/// Reads an array of optional object records.
+fn read_objects<T>(
+    r: &mut Reader<'_>,
+    v: Versions,
+    depth: usize,
+    what: &'static str,
+    pick: impl Fn(Geometry) -> Option<T>,
+) -> Result<Vec<Option<T>>> {
+    let (_, n) = begin_array(r, 4, what)?;
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        if r.i32(what)? == 1 {
+            let g = read_object(r, v, depth + 1)?;
+            let name = g.rhino_type_name();
+            out.push(Some(pick(g).ok_or_else(|| {
+                Error::Invalid(format!("{what} {i} is a {name}"))
+            })?));
+        } else {
+            out.push(None);
+        }
+    }
+    r.end_chunk()?;
+    Ok(out)
+}
+
+/// The part of `curve` on its proxy `sub` domain, reversed if asked, on the domain `domain`.
+fn proxy_curve(
+    curve: &NurbsCurve,
+    sub: Interval,
+    reversed: bool,
+    domain: Interval,
+    what: &'static str,
+) -> Result<NurbsCurve> {
+    let g = |source| Error::Geometry { what, source };
+    let full = curve.domain();
+    let mut c = if sub == full {
+        curve.clone()
+    } else {
+        curve.trim(sub).map_err(g)?
+    };
+    if reversed {
+        c = c.reversed();
+    }
+    if c.domain() != domain {
+        c = c.reparameterized(domain).map_err(g)?;
+    }
+    Ok(c)
+}
+
+/// Reads `ON_Brep` class data (version 3.x) into a kernel B-rep. Faces on NURBS and plane
+/// surfaces are supported; trims are kept in the surface's parameters.
+///
+/// # Errors
+/// [`Error::Invalid`] for versions, indices, trim or loop types that locus does not read,
+/// [`Error::Geometry`] when the parts do not make a valid B-rep, and every reading error.
+pub fn read(r: &mut Reader<'_>, v: Versions, depth: usize) -> Result<Brep> {
+    let (major, minor) = r.version("ON_Brep version")?;
+    if major != 3 {
+        return Err(Error::Invalid(format!(
+            "ON_Brep version {major}.{minor} is not supported (locus reads 3.x)"
+        )));
+    }
+    let curve = |g: Geometry| match g {
+        Geometry::Curve(c) => Some(c.to_nurbs()),
+        _ => None,
+    };
+    let c2 = read_objects(r, v, depth, "ON_Brep trim curve", curve)?;
+    let c3 = read_objects(r, v, depth, "ON_Brep edge curve", curve)?;
+    let srf = read_objects(r, v, depth, "ON_Brep surface", |g| match g {
+        Geometry::Surface(s) => Some(s),
+        _ => None,
+    })?;
+
+    let (_, n) = begin_array(r, 40, "ON_Brep vertices")?;
+    let mut raw_vertices = Vec::with_capacity(n);
+    for _ in 0..n {
+        r.i32("ON_Brep vertex index")?;
+        let p = Point3::new(r.f64("vertex")?, r.f64("vertex")?, r.f64("vertex")?);
+        if !p.is_finite() {
+            return Err(Error::Invalid("an ON_Brep vertex is not finite".into()));
+        }
+        read_indices(r, "ON_Brep vertex edges")?;
+        r.f64("ON_Brep vertex tolerance")?;
+        raw_vertices.push(p);
+    }
+    r.end_chunk()?;
+    let nv = raw_vertices.len();
+
+    let (_, n) = begin_array(r, 64, "ON_Brep edges")?;
+    let mut edges = Vec::with_capacity(n);
+    for i in 0..n {
+        r.i32("ON_Brep edge index")?;
+        let c3i = r.i32("ON_Brep edge curve index")?;
+        let reversed = r.i32("ON_Brep edge reversed flag")? != 0;
+        let sub = read_interval(r, "ON_Brep edge proxy domain")?;
+        let vi = [r.i32("ON_Brep edge vertex")?, r.i32("ON_Brep edge vertex")?];
+        read_indices(r, "ON_Brep edge trims")?;
+        r.f64("ON_Brep edge tolerance")?;
+        let domain = read_interval(r, "ON_Brep edge domain")?;
+        let c = c3
+            .get(index(c3i, c3.len(), "ON_Brep edge curve index")?)
+            .and_then(Option::as_ref)
+            .ok_or_else(|| Error::Invalid(format!("ON_Brep edge {i} has no curve")))?;
+        edges.push(BrepEdge {
+            curve: proxy_curve(c, sub, reversed, domain, "ON_Brep edge")?,
+            vertices: [
+                index(vi[0], nv, "ON_Brep edge vertex")?,
+                index(vi[1], nv, "ON_Brep edge vertex")?,
+            ],
+            trims: Vec::new(),
+        });
+    }
+    r.end_chunk()?;
+
+    let (_, n) = begin_array(r, 132, "ON_Brep trims")?;
+    let mut trims = Vec::with_capacity(n);
+    for i in 0..n {
+        r.i32("ON_Brep trim index")?;
+        let c2i = r.i32("ON_Brep trim curve index")?;
+        let sub = read_interval(r, "ON_Brep trim proxy domain")?;
+        let ei = r.i32("ON_Brep trim edge")?;
+        let vi = [r.i32("ON_Brep trim vertex")?, r.i32("ON_Brep trim vertex")?];
+        let rev3d = r.i32("ON_Brep trim reversed flag")? != 0;
+        let kind = r.i32("ON_Brep trim type")?;
+        r.i32("ON_Brep trim iso flag")?;
+        let li = r.i32("ON_Brep trim loop")?;
+        r.skip(16, "ON_Brep trim tolerances")?;
+        let domain = read_interval(r, "ON_Brep trim domain")?;
+        let proxy_reversed = r.bytes(8, "ON_Brep trim proxy flags")?[0] == 1;
+        r.skip(24 + 16, "ON_Brep trim legacy fields")?;
+        let edge = match kind {
+            1..=3 => Some(index(ei, edges.len(), "ON_Brep trim edge")?),
+            4 => None,
+            k => {
+                return Err(Error::Invalid(format!(
+                    "ON_Brep trim {i} has type {k}; locus reads boundary, mated, seam and \
+                     singular trims"
+                )));
+            }
+        };
+        let c = c2
+            .get(index(c2i, c2.len(), "ON_Brep trim curve index")?)
+            .and_then(Option::as_ref)
+            .ok_or_else(|| Error::Invalid(format!("ON_Brep trim {i} has no curve")))?;
+        trims.push(BrepTrim {
+            curve: proxy_curve(c, sub, proxy_reversed, domain, "ON_Brep trim")?,
+            edge,
+            reversed: rev3d,
+            kind: TrimKind::Boundary, // recomputed by Brep::from_parts
+            loop_index: usize::try_from(li)
+                .map_err(|_| Error::Invalid(format!("ON_Brep trim {i} has loop index {li}")))?,
+            vertices: [
+                index(vi[0], nv, "ON_Brep trim vertex")?,
+                index(vi[1], nv, "ON_Brep trim vertex")?,
+            ],
+        });
+    }
+    r.end_chunk()?;
+
+    let (_, n) = begin_array(r, 16, "ON_Brep loops")?;
+    let mut loops = Vec::with_capacity(n);
+    for i in 0..n {
+        r.i32("ON_Brep loop index")?;
+        let ti = read_indices(r, "ON_Brep loop trims")?;
+        let kind = match r.i32("ON_Brep loop type")? {
+            1 => LoopKind::Outer,
+            2 => LoopKind::Inner,
+            k => {
+                return Err(Error::Invalid(format!(
+                    "ON_Brep loop {i} has type {k}; locus reads outer and inner loops"
+                )));
+            }
+        };
+        let fi = r.i32("ON_Brep loop face")?;
+        loops.push(BrepLoop {
+            face: usize::try_from(fi)
+                .map_err(|_| Error::Invalid(format!("ON_Brep loop {i} has face index {fi}")))?,
+            kind,
+            trims: ti
+                .iter()
+                .map(|&t| index(t, trims.len(), "ON_Brep loop trim"))
+                .collect::<Result<_>>()?,
+        });
+    }
+    r.end_chunk()?;
+
+    let (face_minor, n) = begin_array(r, 20, "ON_Brep faces")?;
+    let mut faces = Vec::with_capacity(n);
+    for i in 0..n {
+        r.i32("ON_Brep face index")?;
+        let li = read_indices(r, "ON_Brep face loops")?;
+        let si = r.i32("ON_Brep face surface")?;
+        let reversed = r.i32("ON_Brep face reversed flag")? != 0;
+        r.i32("ON_Brep face material channel")?;
+        let surface = srf
+            .get(index(si, srf.len(), "ON_Brep face surface")?)
+            .and_then(Option::as_ref)
+            .ok_or_else(|| Error::Invalid(format!("ON_Brep face {i} has no surface")))?
+            .clone();
+        faces.push(BrepFace {
+            surface,
+            loops: li
+                .iter()
+                .map(|&l| index(l, loops.len(), "ON_Brep face loop"))
+                .collect::<Result<_>>()?,
+            reversed,
+        });
+    }
+    if face_minor >= 1 {
+        r.skip(
+            n.checked_mul(16).ok_or(Error::TooLarge(n))?,
+            "ON_Brep face ids",
+        )?;
+        if face_minor >= 2 && r.bool("ON_Brep face colour flag")? {
+            r.skip(n * 4, "ON_Brep face colours")?;
+        }
+    }
+    r.end_chunk()?;
+
+    // Bounding box, then (3.1) render and analysis meshes, (3.2) the solid flag, (3.3) the
+    // region topology: read past them so that the class data's CRC is checked.
+    r.skip(48, "ON_Brep bounding box")?;
+    if minor >= 1 {
+        r.skip_chunk()?;
+        r.skip_chunk()?;
+    }
+    if minor >= 2 {
+        r.i32("ON_Brep solid flag")?;
+    }
+    if minor >= 3 {
+        r.skip_chunk()?;
+    }
+
+    let vertices = raw_vertices
+        .into_iter()
+        .map(|point| BrepVertex {
+            point,
+            edges: Vec::new(),
+        })
+        .collect();
+    Brep::from_parts(vertices, edges, trims, loops, faces).map_err(|source| Error::Geometry {
+        what: "ON_Brep",
+        source,
+    })
 }

@@ -235,3 +235,57 @@ pub fn read_surface(r: &mut Reader<'_>) -> Result<NurbsSurface> {
         source,
     })
 }
+
+/// Reads `ON_PlaneSurface` class data as the bilinear NURBS surface it is: the rectangle
+/// `extents` of its plane, on the parameter domain `domain` (the same parameters as Rhino's
+/// plane surface, since both map linearly).
+///
+/// # Errors
+/// [`Error::Invalid`] for a version other than 1.x or an empty or non-finite domain,
+/// [`Error::Geometry`] for a degenerate plane.
+pub fn read_plane_surface(r: &mut Reader<'_>) -> Result<NurbsSurface> {
+    let (major, minor) = r.version("ON_PlaneSurface version")?;
+    if major != 1 {
+        return Err(Error::Invalid(format!(
+            "ON_PlaneSurface version {major}.{minor} is not supported"
+        )));
+    }
+    let v = r.f64s(16, "ON_PlaneSurface plane")?;
+    let origin = Point3::new(v[0], v[1], v[2]);
+    let x = locus_kernel::Vector3::new(v[3], v[4], v[5]);
+    let y = locus_kernel::Vector3::new(v[6], v[7], v[8]);
+    let d = r.f64s(4, "ON_PlaneSurface domain")?;
+    let e = if minor >= 1 {
+        r.f64s(4, "ON_PlaneSurface extents")?
+    } else {
+        d.clone()
+    };
+    if d.iter().chain(&e).any(|t| !t.is_finite()) || !(d[0] < d[1] && d[2] < d[3]) {
+        return Err(Error::Invalid(
+            "ON_PlaneSurface domain is not finite and increasing".into(),
+        ));
+    }
+    let plane =
+        locus_kernel::Plane::from_frame(origin, x, y).map_err(|source| Error::Geometry {
+            what: "ON_PlaneSurface plane",
+            source,
+        })?;
+    let corner = |s: f64, t: f64| plane.point_at(s, t, 0.0);
+    let points = vec![
+        corner(e[0], e[2]),
+        corner(e[0], e[3]),
+        corner(e[1], e[2]),
+        corner(e[1], e[3]),
+    ];
+    NurbsSurface::from_flat(
+        [1, 1],
+        [2, 2],
+        points,
+        vec![1.0; 4],
+        [vec![d[0], d[1]], vec![d[2], d[3]]],
+    )
+    .map_err(|source| Error::Geometry {
+        what: "ON_PlaneSurface",
+        source,
+    })
+}

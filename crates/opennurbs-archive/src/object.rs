@@ -181,6 +181,8 @@ pub(crate) fn read_object(r: &mut Reader<'_>, v: Versions, depth: usize) -> Resu
     read_record(r, |r, class| match class {
         ClassId::MESH => mesh::read(r, v).map(Geometry::Mesh),
         ClassId::NURBS_SURFACE => nurbs::read_surface(r).map(Geometry::Surface),
+        ClassId::PLANE_SURFACE => nurbs::read_plane_surface(r).map(Geometry::Surface),
+        ClassId::BREP => brep::read(r, v, depth).map(Geometry::Brep),
         ClassId::NURBS_CURVE
         | ClassId::LINE_CURVE
         | ClassId::POLYLINE_CURVE
