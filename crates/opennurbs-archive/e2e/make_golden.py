@@ -9,7 +9,7 @@ import os
 import rhino3dm as r
 
 from rhino_describe import HERE, describe
-from test_rhino3dm import RHINO_CASES, polycurve
+from test_rhino3dm import RHINO_BREPS, RHINO_CASES, polycurve
 
 OUT = os.path.join(HERE, "..", "tests", "golden")
 
@@ -18,6 +18,10 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     cases = dict(RHINO_CASES)
     cases["polycurve_line_arc_nurbs"] = polycurve()
+    exact = {}
+    for name, (b, area, volume) in RHINO_BREPS.items():
+        cases[name] = b
+        exact[name] = {"area": area, "volume": volume}
     for name, obj in sorted(cases.items()):
         entry = {
             "rhino3dm": r.__version__,
@@ -28,6 +32,8 @@ def main():
             entry["expect"] = describe(obj)
         except TypeError:
             entry["expect"] = None
+        if name in exact:
+            entry["exact"] = exact[name]
         if isinstance(obj, r.PolyCurve):
             d = obj.Domain
             entry["samples"] = [

@@ -111,6 +111,16 @@ def describe(o):
             "knots_u": list(o.KnotsU),
             "knots_v": list(o.KnotsV),
         }
+    if isinstance(o, r.Brep):
+        return {
+            "type": "brep",
+            "faces": len(o.Faces),
+            "edges": len(o.Edges),
+            "vertices": len(o.Vertices),
+            "loops": sum(len(o.Faces[i].Loops) for i in range(len(o.Faces))) if hasattr(o.Faces[0], "Loops") else None,
+            "solid": o.IsSolid,
+            "vertex_points": [_p(o.Vertices[i].Location) for i in range(len(o.Vertices))],
+        }
     raise TypeError(f"no description for {type(o).__name__}")
 
 

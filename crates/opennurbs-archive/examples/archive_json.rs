@@ -4,6 +4,8 @@
 //! Reads a JSON list of requests on standard input and writes the list of answers:
 //! - `{"op": "encode", "geometry": DESCRIPTION}` → `{"encoded": COMMON_OBJECT_JSON}`
 //! - `{"op": "decode", "encoded": COMMON_OBJECT_JSON}` → `{"geometry": DESCRIPTION}`
+//! - `{"op": "reencode", "encoded": COMMON_OBJECT_JSON}` → `{"encoded": ...}` (decoded by
+//!   locus and encoded again)
 //! - `{"op": "describe", "geometry": DESCRIPTION}` → `{"geometry": FULL_DESCRIPTION}` (what
 //!   locus builds from a short description, e.g. a B-rep's faces and edges)
 //!
@@ -27,6 +29,12 @@ fn answer(req: &Value) -> Value {
         Some("describe") => match describe::build(&req["geometry"]) {
             Ok(g) => json!({ "geometry": describe::describe(&g) }),
             Err(e) => json!({ "error": e }),
+        },
+        Some("reencode") => match locus_opennurbs_archive::decode_json(&req["encoded"])
+            .and_then(|g| locus_opennurbs_archive::encode_json(&g))
+        {
+            Ok(enc) => json!({ "encoded": enc }),
+            Err(e) => json!({ "error": e.to_string() }),
         },
         Some("decode") => match locus_opennurbs_archive::decode_json(&req["encoded"]) {
             Ok(g) => json!({ "geometry": describe::describe(&g), "type": g.rhino_type_name() }),

@@ -12,17 +12,18 @@
 //! curves (`x = u`, `y = v`), as openNURBS requires.
 //!
 //! On read, each edge and trim takes the part of its curve that its proxy domain selects, in
-//! its direction, on its own domain; faces on `ON_NurbsSurface` and `ON_PlaneSurface` are
-//! read (other surface classes are refused with their class name); back references and trim
-//! kinds are recomputed and checked by the kernel's `Brep::from_parts`.
+//! its direction, on its own domain; faces on `ON_NurbsSurface`, `ON_PlaneSurface` and
+//! `ON_RevSurface` (untrimmed inside its domain: spheres, cylinders, cones) are read, other
+//! surface classes are refused with their class name; back references and trim kinds are
+//! recomputed and checked by the kernel's `Brep::from_parts`.
 
 use locus_kernel::{
     Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, Interval, LoopKind, NurbsCurve,
-    Point3, TrimKind,
+    NurbsSurface, Point3, TrimKind,
 };
 
 use crate::binary::{Reader, Writer, tcode};
-use crate::object::{ClassId, read_object, write_record};
+use crate::object::{ClassId, read_class, read_object, read_record, write_record};
 use crate::{Error, Geometry, Result, Versions, nurbs};
 
 /// The tolerance written for vertices, edges and trims: 0, since the kernel's B-reps are built
@@ -274,6 +275,36 @@ fn read_objects<T>(
     Ok(out)
 }
 
+/// Reads the surface array: each surface, and whether it was a surface of revolution (whose
+/// NURBS form has other parameters inside its domain; see [`crate::revsurface`]).
+fn read_surfaces(
+    r: &mut Reader<'_>,
+    v: Versions,
+    depth: usize,
+) -> Result<Vec<Option<(NurbsSurface, bool)>>> {
+    let (_, n) = begin_array(r, 4, "ON_Brep surfaces")?;
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        if r.i32("ON_Brep surface flag")? != 1 {
+            out.push(None);
+            continue;
+        }
+        let s = read_record(r, |r, class| {
+            let g = read_class(r, class, v, depth + 1)?;
+            match g {
+                Geometry::Surface(s) => Ok((s, class == ClassId::REV_SURFACE)),
+                other => Err(Error::Invalid(format!(
+                    "ON_Brep surface {i} is a {}",
+                    other.rhino_type_name()
+                ))),
+            }
+        })?;
+        out.push(Some(s));
+    }
+    r.end_chunk()?;
+    Ok(out)
+}
+
 /// The part of `curve` on its proxy `sub` domain, reversed if asked, on the domain `domain`.
 fn proxy_curve(
     curve: &NurbsCurve,
@@ -317,10 +348,7 @@ pub fn read(r: &mut Reader<'_>, v: Versions, depth: usize) -> Result<Brep> {
     };
     let c2 = read_objects(r, v, depth, "ON_Brep trim curve", curve)?;
     let c3 = read_objects(r, v, depth, "ON_Brep edge curve", curve)?;
-    let srf = read_objects(r, v, depth, "ON_Brep surface", |g| match g {
-        Geometry::Surface(s) => Some(s),
-        _ => None,
-    })?;
+    let srf = read_surfaces(r, v, depth)?;
 
     let (_, n) = begin_array(r, 40, "ON_Brep vertices")?;
     let mut raw_vertices = Vec::with_capacity(n);
@@ -437,17 +465,21 @@ pub fn read(r: &mut Reader<'_>, v: Versions, depth: usize) -> Result<Brep> {
 
     let (face_minor, n) = begin_array(r, 20, "ON_Brep faces")?;
     let mut faces = Vec::with_capacity(n);
+    let mut revolved_faces = Vec::new();
     for i in 0..n {
         r.i32("ON_Brep face index")?;
         let li = read_indices(r, "ON_Brep face loops")?;
         let si = r.i32("ON_Brep face surface")?;
         let reversed = r.i32("ON_Brep face reversed flag")? != 0;
         r.i32("ON_Brep face material channel")?;
-        let surface = srf
+        let (surface, revolved) = srf
             .get(index(si, srf.len(), "ON_Brep face surface")?)
             .and_then(Option::as_ref)
             .ok_or_else(|| Error::Invalid(format!("ON_Brep face {i} has no surface")))?
             .clone();
+        if revolved {
+            revolved_faces.push(i);
+        }
         faces.push(BrepFace {
             surface,
             loops: li
@@ -482,6 +514,26 @@ pub fn read(r: &mut Reader<'_>, v: Versions, depth: usize) -> Result<Brep> {
         r.skip_chunk()?;
     }
 
+    // Trims of faces on surfaces of revolution must run along the sides of the parameter
+    // rectangle, where the NURBS form's parameters are the revolution's.
+    for &f in &revolved_faces {
+        let s = &faces[f].surface;
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        for &l in &faces[f].loops {
+            for &t in loops.get(l).map_or(&[][..], |l| &l.trims[..]) {
+                let pts = trims[t].curve.points();
+                let along = |c: fn(&Point3) -> f64, a: f64, b: f64| {
+                    pts.iter().all(|p| c(p) == a) || pts.iter().all(|p| c(p) == b)
+                };
+                if !(along(|p| p.x, du.t0, du.t1) || along(|p| p.y, dv.t0, dv.t1)) {
+                    return Err(Error::Invalid(format!(
+                        "ON_Brep face {f} is a surface of revolution trimmed inside its domain \
+                         (trim {t}); locus reads such faces only untrimmed"
+                    )));
+                }
+            }
+        }
+    }
     let vertices = raw_vertices
         .into_iter()
         .map(|point| BrepVertex {

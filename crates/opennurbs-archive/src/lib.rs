@@ -43,9 +43,11 @@
 //! | `ON_ArcCurve` | [`Curve::Arc`], [`Curve::Circle`] | [`Curve::Arc`] or [`Curve::Circle`] |
 //! | `ON_PolyCurve` | — | one [`Curve::Nurbs`]: the segments joined at a common degree |
 //! | `ON_NurbsSurface` | [`NurbsSurface`] | [`NurbsSurface`] |
-//! | `ON_Brep` | every [`Brep`] (NURBS faces, trims, edges; exact, tolerance 0) | — (not yet: [`Error::UnsupportedClass`]) |
+//! | `ON_Brep` | every [`Brep`] (NURBS faces, trims, edges; exact, tolerance 0) | [`Brep`]: faces on NURBS, plane and revolution surfaces (the last untrimmed inside their domain), trims of type boundary, mated, seam and singular |
+//! | `ON_PlaneSurface` | — | [`NurbsSurface`] (bilinear, same parameters) |
+//! | `ON_RevSurface` | — | [`NurbsSurface`] (exact; rational arc parameters between the knots) |
 //!
-//! Other classes (extrusions, SubDs, points, annotations, ...) are reported as
+//! Other classes (extrusions, sum surfaces, SubDs, points, annotations, ...) are reported as
 //! [`Error::UnsupportedClass`] with their class id and name. User data is skipped on read and
 //! never written. Archives of 3dm version 5 and older (4-byte chunk lengths) are refused.
 //!
@@ -65,6 +67,7 @@ pub mod mesh;
 pub mod nurbs;
 mod object;
 pub mod polycurve;
+pub mod revsurface;
 
 pub use crate::error::{Error, Result};
 pub use crate::object::ClassId;
@@ -91,7 +94,7 @@ pub enum Geometry {
     Curve(Curve),
     /// A NURBS surface (`ON_NurbsSurface`).
     Surface(NurbsSurface),
-    /// A boundary representation (`ON_Brep`; written only, for now).
+    /// A boundary representation (`ON_Brep`).
     Brep(Brep),
 }
 

@@ -1,7 +1,7 @@
 //! Object records: the class id, the class data and the end mark around one object.
 
 use crate::binary::{Reader, Writer, tcode};
-use crate::{Error, Geometry, Result, Versions, brep, curve, mesh, nurbs};
+use crate::{Error, Geometry, Result, Versions, brep, curve, mesh, nurbs, revsurface};
 
 /// An openNURBS class id (`ON_ClassId::Uuid`), in the usual text byte order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -178,10 +178,27 @@ pub(crate) fn read_record<T>(
 /// Reads one object record as geometry. `depth` counts the records around this one (a
 /// polycurve's segments are records inside its data).
 pub(crate) fn read_object(r: &mut Reader<'_>, v: Versions, depth: usize) -> Result<Geometry> {
-    read_record(r, |r, class| match class {
+    read_record(r, |r, class| read_class(r, class, v, depth))
+}
+
+/// Reads the class data of `class` as geometry.
+pub(crate) fn read_class(
+    r: &mut Reader<'_>,
+    class: ClassId,
+    v: Versions,
+    depth: usize,
+) -> Result<Geometry> {
+    if depth >= crate::binary::MAX_DEPTH / 4 {
+        return Err(Error::Invalid(format!(
+            "objects nested deeper than {} levels",
+            crate::binary::MAX_DEPTH / 4
+        )));
+    }
+    match class {
         ClassId::MESH => mesh::read(r, v).map(Geometry::Mesh),
         ClassId::NURBS_SURFACE => nurbs::read_surface(r).map(Geometry::Surface),
         ClassId::PLANE_SURFACE => nurbs::read_plane_surface(r).map(Geometry::Surface),
+        ClassId::REV_SURFACE => revsurface::read(r, v, depth).map(Geometry::Surface),
         ClassId::BREP => brep::read(r, v, depth).map(Geometry::Brep),
         ClassId::NURBS_CURVE
         | ClassId::LINE_CURVE
@@ -192,5 +209,5 @@ pub(crate) fn read_object(r: &mut Reader<'_>, v: Versions, depth: usize) -> Resu
             id: other.to_string(),
             name: other.name(),
         }),
-    })
+    }
 }
