@@ -52,12 +52,21 @@
 //! never written. Archives of 3dm version 5 and older (4-byte chunk lengths) are refused.
 //!
 //! # Hostile input
-//! Reading never panics and never allocates more than the input could hold: every length and
-//! count is checked against the bytes left in its chunk before anything is read or reserved,
-//! chunk nesting is bounded by [`binary::MAX_DEPTH`], every CRC is checked, deflated buffers
-//! are inflated only up to their declared (and bounded) size, and the decoded geometry goes
-//! through the kernel's validating constructors. Failures are [`Error`]s that say what was
-//! wrong and at which byte.
+//! Reading never panics and allocates in proportion to the input: every length and count is
+//! checked against the bytes left in its chunk before anything is read or reserved; deflated
+//! mesh buffers are inflated only up to their declared size, itself capped at
+//! [`mesh::MAX_BUFFER_BYTES`]; chunk nesting is bounded by [`binary::MAX_DEPTH`] and object
+//! nesting (polycurves in B-reps ...) by a quarter of it. The CRC of every chunk read to its
+//! end is checked (a chunk of a newer minor version, read only in part, is skipped as openNURBS
+//! skips it), and the decoded geometry goes through the kernel's validating constructors
+//! (`Brep::from_parts` for B-reps). Failures are [`Error`]s that say what was wrong and, for
+//! damaged bytes, at which byte.
+//!
+//! # Versions
+//! locus writes 3dm version 60 archives with rhino3dm 8's openNURBS version number, as
+//! rhino3dm's `Encode` does (so that its bytes for NURBS curves and surfaces are identical to
+//! rhino3dm's); it reads versions 50 and later (Rhino 5 to 8 write the same layouts for these
+//! classes, version-dependent fields are read as their version says).
 
 pub mod binary;
 pub mod brep;
@@ -110,6 +119,32 @@ impl Geometry {
             Self::Surface(_) => "Rhino.Geometry.NurbsSurface",
             Self::Brep(_) => "Rhino.Geometry.Brep",
         }
+    }
+}
+
+impl From<Mesh> for Geometry {
+    fn from(m: Mesh) -> Self {
+        Self::Mesh(m)
+    }
+}
+impl From<Curve> for Geometry {
+    fn from(c: Curve) -> Self {
+        Self::Curve(c)
+    }
+}
+impl From<locus_kernel::NurbsCurve> for Geometry {
+    fn from(c: locus_kernel::NurbsCurve) -> Self {
+        Self::Curve(Curve::Nurbs(c))
+    }
+}
+impl From<NurbsSurface> for Geometry {
+    fn from(s: NurbsSurface) -> Self {
+        Self::Surface(s)
+    }
+}
+impl From<Brep> for Geometry {
+    fn from(b: Brep) -> Self {
+        Self::Brep(b)
     }
 }
 
