@@ -43,13 +43,13 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("mesh_100k");
     group.sample_size(10);
     group.bench_function("baseline: Mesh::new from vectors", |b| {
-        b.iter(|| black_box(build()))
+        b.iter(|| black_box(build()));
     });
     group.bench_function("encode", |b| {
-        b.iter(|| black_box(encode(black_box(&g)).unwrap()))
+        b.iter(|| black_box(encode(black_box(&g)).unwrap()));
     });
     group.bench_function("decode", |b| {
-        b.iter(|| black_box(decode(black_box(&bytes)).unwrap()))
+        b.iter(|| black_box(decode(black_box(&bytes)).unwrap()));
     });
     group.finish();
 }
