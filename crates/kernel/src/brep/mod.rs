@@ -22,6 +22,7 @@ pub(crate) mod bounding_box;
 pub(crate) mod builders;
 pub(crate) mod join;
 pub(crate) mod mass;
+pub(crate) mod parts;
 
 use crate::surface::direction::SurfaceSide;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result, Transform};
