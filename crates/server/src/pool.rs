@@ -106,3 +106,47 @@ fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
         "a panic".to_owned()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn a_panicking_job_is_a_500_and_the_pool_goes_on() {
+        let pool = Pool::new(1, 0);
+        let start = Instant::now();
+        let long = Duration::from_secs(10);
+        let e = pool
+            .run(start, long, || -> Result<(), ApiError> { panic!("boom") })
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::INTERNAL_SERVER_ERROR);
+        assert!(e.message.contains("boom"), "{}", e.message);
+        assert_eq!(pool.run(Instant::now(), long, || Ok(7)).await, Ok(7));
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn deadlines_and_a_full_queue_are_refused() {
+        let pool = std::sync::Arc::new(Pool::new(1, 0));
+        let e = pool
+            .run(Instant::now(), Duration::from_millis(20), || {
+                std::thread::sleep(Duration::from_millis(300));
+                Ok(())
+            })
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::GATEWAY_TIMEOUT);
+        // The late solve still holds the only worker: a second request finds the queue full.
+        let e = pool
+            .run(Instant::now(), Duration::from_secs(5), || Ok(()))
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::SERVICE_UNAVAILABLE);
+        tokio::time::sleep(Duration::from_millis(400)).await;
+        assert_eq!(
+            pool.run(Instant::now(), Duration::from_secs(5), || Ok(1))
+                .await,
+            Ok(1)
+        );
+    }
+}
