@@ -113,6 +113,8 @@ fn parse_data(data: &Json) -> Result<Json, String> {
             Err(e) => match s.trim() {
                 "True" => Ok(Json::Bool(true)),
                 "False" => Ok(Json::Bool(false)),
+                // Json.NET writes `NaN` and `Infinity` bare: numbers, refused later as such.
+                t if t.parse::<f64>().is_ok() => Ok(Json::String(t.to_owned())),
                 _ => Err(format!("\"data\" is not JSON: {e}")),
             },
         },
