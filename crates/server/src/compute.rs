@@ -187,7 +187,7 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
     let request = parse_request(body)?;
     let entry = state.resolve(request.algo.as_deref(), request.pointer.as_deref())?;
     let definition = &entry.definition;
-    let (mut evaluator, _warm) = entry.checkout();
+    let (mut evaluator, warm) = entry.checkout();
     let limits = &state.config.limits;
     let (skipped, mut warnings) = apply_inputs(
         definition,
@@ -238,6 +238,7 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
         }
     }
     let messages: Vec<Json> = evaluator.messages().map(message_json).collect();
+    let nodes_run = evaluator.last_run().len();
 
     let mut answer = Map::new();
     let echo = |v: &Option<Json>, default: Json| v.clone().unwrap_or(default);
@@ -271,7 +272,13 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
     // What locus says beyond Compute, which Compute clients ignore.
     answer.insert(
         "locus".into(),
-        json!({"messages": messages, "skipped_inputs": skipped}),
+        json!({
+            "messages": messages,
+            "skipped_inputs": skipped,
+            // Whether an evaluator of an earlier solve was reused, and how many nodes ran.
+            "warm": warm,
+            "nodes_run": nodes_run,
+        }),
     );
     entry.checkin(evaluator);
     Ok(Json::Object(answer))

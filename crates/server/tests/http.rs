@@ -223,6 +223,26 @@ fn tangent_spheres_solve_in_compute_form_then_by_pointer() {
 }
 
 #[test]
+fn repeated_solves_rerun_only_what_changed() {
+    // One worker and one client: each solve gets the evaluator of the one before.
+    let s = start(Config { workers: 1, ..config() });
+    let solve = |t: f64| {
+        post(s.addr(), "/grasshopper", &json!({"algo": algo("tangent_spheres.ron"),
+            "values": [{"ParamName": "t", "InnerTree": {"0": [{"data": t}]}}]}))
+        .json()
+    };
+    let first = solve(0.5);
+    assert_eq!((first["locus"]["warm"].clone(), first["locus"]["nodes_run"].clone()), (json!(false), json!(12)));
+    let same = solve(0.5);
+    assert_eq!((same["locus"]["warm"].clone(), same["locus"]["nodes_run"].clone()), (json!(true), json!(0)));
+    assert_eq!(same["values"], first["values"]);
+    // A new t runs t and everything downstream of it, not the points A and B.
+    let other = solve(0.25);
+    assert_eq!(other["locus"]["nodes_run"], json!(10));
+    assert_eq!(item_data(&other, "D")[0].1, r#"{"X":2.0,"Y":1.5,"Z":0.0}"#);
+}
+
+#[test]
 fn every_plain_item_type_round_trips() {
     let s = start(config());
     let plane = r#"{"Origin":{"X":1.0,"Y":2.0,"Z":3.0},"XAxis":{"X":0.0,"Y":1.0,"Z":0.0},"YAxis":{"X":0.0,"Y":0.0,"Z":1.0},"ZAxis":{"X":1.0,"Y":0.0,"Z":0.0}}"#;
