@@ -115,7 +115,7 @@ pub fn join(segments: &[NurbsCurve], t: &[f64]) -> Result<NurbsCurve> {
             }
             if let Some(last) = points.last().copied() {
                 let gap = euclidean(&last).distance(euclidean(&bez[0]));
-                if !(gap <= SEGMENT_GAP_TOLERANCE * scale) {
+                if gap.is_nan() || gap > SEGMENT_GAP_TOLERANCE * scale {
                     return Err(Error::Invalid(format!(
                         "ON_PolyCurve segment {i} starts {gap} away from where segment {} \
                          ends",

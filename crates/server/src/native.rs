@@ -165,12 +165,12 @@ fn decode_tree(input: &InputInfo, json: &Json) -> Result<DataTree, ApiError> {
             }
         }
         Json::Array(items) => {
-            tree.insert(locus_runtime::TreePath::zero(), branch_of("{0}", items)?)
+            tree.insert(locus_runtime::TreePath::zero(), branch_of("{0}", items)?);
         }
-        item => tree.insert(
-            locus_runtime::TreePath::zero(),
-            branch_of("{0}", std::slice::from_ref(item))?,
-        ),
+        item => {
+            let b = branch_of("{0}", std::slice::from_ref(item))?;
+            tree.insert(locus_runtime::TreePath::zero(), b);
+        }
     }
     Ok(tree)
 }

@@ -225,16 +225,35 @@ fn tangent_spheres_solve_in_compute_form_then_by_pointer() {
 #[test]
 fn repeated_solves_rerun_only_what_changed() {
     // One worker and one client: each solve gets the evaluator of the one before.
-    let s = start(Config { workers: 1, ..config() });
+    let s = start(Config {
+        workers: 1,
+        ..config()
+    });
     let solve = |t: f64| {
-        post(s.addr(), "/grasshopper", &json!({"algo": algo("tangent_spheres.ron"),
-            "values": [{"ParamName": "t", "InnerTree": {"0": [{"data": t}]}}]}))
+        post(
+            s.addr(),
+            "/grasshopper",
+            &json!({"algo": algo("tangent_spheres.ron"),
+            "values": [{"ParamName": "t", "InnerTree": {"0": [{"data": t}]}}]}),
+        )
         .json()
     };
     let first = solve(0.5);
-    assert_eq!((first["locus"]["warm"].clone(), first["locus"]["nodes_run"].clone()), (json!(false), json!(12)));
+    assert_eq!(
+        (
+            first["locus"]["warm"].clone(),
+            first["locus"]["nodes_run"].clone()
+        ),
+        (json!(false), json!(12))
+    );
     let same = solve(0.5);
-    assert_eq!((same["locus"]["warm"].clone(), same["locus"]["nodes_run"].clone()), (json!(true), json!(0)));
+    assert_eq!(
+        (
+            same["locus"]["warm"].clone(),
+            same["locus"]["nodes_run"].clone()
+        ),
+        (json!(true), json!(0))
+    );
     assert_eq!(same["values"], first["values"]);
     // A new t runs t and everything downstream of it, not the points A and B.
     let other = solve(0.25);
