@@ -729,3 +729,70 @@ fn concurrent_requests_all_succeed_with_their_own_inputs() {
         t.join().unwrap();
     }
 }
+
+/// Mutated requests (bytes flipped, cut, duplicated, JSON tokens spliced in) never break the
+/// server: every answer is a JSON body with one of the documented statuses, and a good request
+/// still succeeds afterwards.
+#[test]
+fn mutated_requests_never_break_the_server() {
+    let s = start(config());
+    let a = s.addr();
+    let good = json!({"algo": algo("types.ron"), "values": [
+        {"ParamName": "Num", "InnerTree": {"{0}": [{"type": "System.Double", "data": "2.5"}]}},
+        {"ParamName": "Pt", "InnerTree": {"{0;1}": [{"type": "Rhino.Geometry.Point3d",
+            "data": "{\"X\":1.0,\"Y\":2.0,\"Z\":3.0}"}]}},
+        {"ParamName": "Pln", "InnerTree": {"0": [{"data": {"Origin": {"X": 0, "Y": 0, "Z": 0},
+            "XAxis": {"X": 1, "Y": 0, "Z": 0}, "YAxis": {"X": 0, "Y": 1, "Z": 0}}}]}},
+    ]})
+    .to_string()
+    .into_bytes();
+    let splices: [&[u8]; 10] = [
+        b"null",
+        b"[]",
+        b"{}",
+        b"\"\"",
+        b"-1e309",
+        b"1e999",
+        b"\"\\ud800\"",
+        b"[[[[[[",
+        b"\x00",
+        b"\"type\":\"System.Int32\"",
+    ];
+    let mut rng: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng
+    };
+    for round in 0..300 {
+        let mut body = good.clone();
+        for _ in 0..=(next() % 4) {
+            let at = (next() as usize) % body.len();
+            match next() % 4 {
+                0 => body[at] = (next() % 256) as u8,
+                1 => body.truncate(at.max(1)),
+                2 => {
+                    let s = splices[(next() as usize) % splices.len()];
+                    body.splice(at..at, s.iter().copied());
+                }
+                _ => {
+                    let end = (at + (next() as usize) % 64).min(body.len());
+                    let chunk = body[at..end].to_vec();
+                    body.splice(at..at, chunk);
+                }
+            }
+        }
+        let path = ["/grasshopper", "/io", "/v1/run"][round % 3];
+        let r = send(a, "POST", path, &[], &body);
+        assert!(
+            [200, 400, 404, 413, 500].contains(&r.status),
+            "round {round}: status {} for {}",
+            r.status,
+            String::from_utf8_lossy(&body)
+        );
+        let _ = r.json();
+    }
+    let ok = send(a, "POST", "/grasshopper", &[], &good);
+    assert_eq!(ok.status, 200);
+}
