@@ -28,6 +28,7 @@ macro_rules! out_str {
 mod catalog;
 mod graph_file;
 mod render;
+mod serve;
 mod test_graphs;
 
 use std::path::PathBuf;
@@ -115,6 +116,9 @@ enum Command {
         /// The graph file.
         graph: PathBuf,
     },
+    /// Serve graphs over HTTP: Rhino.Compute's Grasshopper endpoints and /v1/run
+    /// (docs/server.md).
+    Serve(serve::ServeArgs),
 }
 
 fn main() -> ExitCode {
@@ -162,6 +166,7 @@ fn main() -> ExitCode {
         Command::Nodes { category } => catalog::list(&registry, category.as_deref()),
         Command::Describe { node } => catalog::describe(&registry, &node),
         Command::Dot { graph } => graph_file::dot(&registry, &graph),
+        Command::Serve(args) => serve::serve(registry, args),
     };
     ExitCode::from(code)
 }

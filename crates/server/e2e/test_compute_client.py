@@ -1,0 +1,148 @@
+"""The official Rhino.Compute Python client (compute-rhino3d) against `locus serve`, with the
+geometry decoded by rhino3dm."""
+import json
+import math
+import os
+
+import compute_rhino3d.Grasshopper as gh
+import requests
+import rhino3dm
+
+HERE = os.path.dirname(__file__)
+DEFS = os.path.join(HERE, "..", "tests", "definitions")
+TANGENT = os.path.join(DEFS, "tangent_spheres.ron")
+TYPES = os.path.join(DEFS, "types.ron")
+
+
+def outputs(answer):
+    """{name: [(type, decoded data), ...]} of an answer."""
+    out = {}
+    for tree in answer["values"]:
+        items = []
+        for branch in tree["InnerTree"].values():
+            for item in branch:
+                items.append((item["type"], json.loads(item["data"])))
+        out[tree["ParamName"]] = items
+    return out
+
+
+def test_tangent_spheres_through_the_official_client(server_url):
+    t = gh.DataTree("t")
+    t.Append([0], [0.5])
+    b = gh.DataTree("B")
+    b.Append([0], [rhino3dm.Point3d(10, 0, 0)])
+    answer = gh.EvaluateDefinition(TANGENT, [t, b])
+    assert "errors" not in answer, answer.get("errors")
+    out = outputs(answer)
+    assert out["D"] == [("Rhino.Geometry.Point3d", {"X": 5.0, "Y": 0.0, "Z": 0.0})]
+    assert out["r1"] == [("System.Double", 2.5)]
+    assert out["r2"] == [("System.Double", 2.5)]
+    # The spheres decode with rhino3dm into NURBS surfaces whose points lie at the radius.
+    for name, centre, radius in [("S1", (2.5, 0, 0), 2.5), ("S2", (7.5, 0, 0), 2.5)]:
+        (kind, data), = out[name]
+        assert kind == "Rhino.Geometry.NurbsSurface"
+        srf = rhino3dm.CommonObject.Decode(data)
+        assert isinstance(srf, rhino3dm.NurbsSurface)
+        assert (srf.Degree(0), srf.Degree(1)) == (2, 2)
+        u0, u1 = srf.Domain(0).T0, srf.Domain(0).T1
+        v0, v1 = srf.Domain(1).T0, srf.Domain(1).T1
+        for i in range(5):
+            for j in range(5):
+                p = srf.PointAt(u0 + (u1 - u0) * i / 4, v0 + (v1 - v0) * j / 4)
+                d = math.dist((p.X, p.Y, p.Z), centre)
+                assert abs(d - radius) < 1e-9, (name, i, j, d)
+
+
+def test_the_answer_pointer_solves_again_without_the_definition(server_url):
+    t = gh.DataTree("t")
+    t.Append([0], [0.25])
+    first = gh.EvaluateDefinition(TANGENT, [t])
+    pointer = first["pointer"]
+    assert pointer.startswith("md5_")
+    body = {"pointer": pointer, "values": [t.data]}
+    second = requests.post(server_url + "/grasshopper", json=body, timeout=30).json()
+    assert outputs(second)["D"] == outputs(first)["D"]
+    assert outputs(second)["D"] == [("Rhino.Geometry.Point3d", {"X": 2.0, "Y": 1.5, "Z": 0.0})]
+
+
+def test_plain_types_and_rhino3dm_geometry_round_trip(server_url):
+    trees = []
+
+    def put(name, value):
+        tree = gh.DataTree(name)
+        tree.Append([0, 1], [value])
+        trees.append(tree)
+
+    plane = rhino3dm.Plane(rhino3dm.Point3d(1, 2, 3), rhino3dm.Vector3d(0, 0, 1))
+    put("Num", 2.5)
+    put("Int", 4)
+    put("Bool", "false")  # booleans go as JSON text (Python's True becomes "True")
+    put("Text", "hello")
+    put("Pt", rhino3dm.Point3d(1, -2, 3.5))
+    put("Vec", rhino3dm.Vector3d(0, 1, 0))
+    put("Pln", plane)
+    curve = rhino3dm.NurbsCurve.Create(
+        False, 3, [rhino3dm.Point3d(0, 0, 0), rhino3dm.Point3d(1, 2, 0),
+                   rhino3dm.Point3d(3, 2, 1), rhino3dm.Point3d(4, 0, 0)])
+    put("Crv", curve)
+    answer = gh.EvaluateDefinition(TYPES, trees)
+    assert "errors" not in answer, answer.get("errors")
+    out = outputs(answer)
+    assert out["Num"] == [("System.Double", 2.5)]
+    assert out["Int"] == [("System.Int32", 4)]
+    assert out["Bool"] == [("System.Boolean", False)]
+    assert out["Text"] == [("System.String", "hello")]
+    assert out["Sum"] == [("System.Double", 6.5)]
+    assert out["Pt"] == [("Rhino.Geometry.Point3d", {"X": 1.0, "Y": -2.0, "Z": 3.5})]
+    assert out["Vec"] == [("Rhino.Geometry.Vector3d", {"X": 0.0, "Y": 1.0, "Z": 0.0})]
+    (kind, pln), = out["Pln"]
+    assert kind == "Rhino.Geometry.Plane"
+    assert pln["Origin"] == {"X": 1.0, "Y": 2.0, "Z": 3.0}
+    assert pln["ZAxis"] == {"X": 0.0, "Y": 0.0, "Z": 1.0}
+    # Outputs keep the input paths.
+    sent = {tree.data["ParamName"] for tree in trees}
+    for tree in answer["values"]:
+        if tree["ParamName"] in sent:
+            assert list(tree["InnerTree"]) == ["{0;1}"], tree
+    # The curve comes back as the same curve, decoded by rhino3dm.
+    (kind, data), = out["Crv"]
+    assert kind == "Rhino.Geometry.NurbsCurve"
+    back = rhino3dm.CommonObject.Decode(data)
+    assert back.Degree == 3 and len(back.Points) == 4
+    for k in range(11):
+        t = curve.Domain.T0 + (curve.Domain.T1 - curve.Domain.T0) * k / 10
+        p, q = curve.PointAt(t), back.PointAt(t)
+        assert math.dist((p.X, p.Y, p.Z), (q.X, q.Y, q.Z)) < 1e-12
+    (kind, data), = out["Srf"]
+    assert isinstance(rhino3dm.CommonObject.Decode(data), rhino3dm.NurbsSurface)
+
+
+def test_io_describes_the_definition(server_url):
+    with open(TANGENT, encoding="utf-8") as f:
+        import base64
+        algo = base64.b64encode(f.read().encode("utf-8")).decode()
+    io = requests.post(server_url + "/io", json={"algo": algo}, timeout=30).json()
+    assert io["InputNames"] == ["A", "B", "t"]
+    assert io["Inputs"][2]["ParamType"] == "Number"
+    assert io["Inputs"][2]["Default"]["InnerTree"]["{0}"] == [
+        {"type": "System.Double", "data": "0.25"}]
+    assert io["CacheKey"].startswith("md5_")
+
+
+def test_caller_errors_are_400_with_a_reason(server_url):
+    t = gh.DataTree("t")
+    t.Append([0], ["not a number"])
+    answer = gh.EvaluateDefinition(TANGENT, [t])
+    assert answer["error"]["status"] == 400
+    assert 'input "t" {0}[0]' in answer["error"]["message"]
+    r = requests.post(server_url + "/grasshopper", data=b"{nope", timeout=30)
+    assert r.status_code == 400 and "not JSON" in r.json()["error"]["message"]
+
+
+def test_compute_sample_ghx_is_refused_clearly_until_grasshopper_files_load(server_url):
+    # mcneel/compute's own sample (copied from shared/ghx/public). Grasshopper files are read
+    # by the locus-ghx crate, which this build does not have yet: the answer says so.
+    sample = os.path.join(HERE, "samples_simple_circle_one.ghx")
+    answer = gh.EvaluateDefinition(sample, [])
+    assert answer["error"]["status"] == 400
+    assert ".ghx" in answer["error"]["message"]
