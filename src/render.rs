@@ -213,7 +213,10 @@ pub fn terminal_safe(text: &str) -> std::borrow::Cow<'_, str> {
 }
 
 /// `text` made safe with [`terminal_safe`] when `stream` is a terminal, else as it is.
-pub fn for_stream(text: &str, stream: &impl std::io::IsTerminal) -> std::borrow::Cow<'_, str> {
+pub fn for_stream<'a>(
+    text: &'a str,
+    stream: &impl std::io::IsTerminal,
+) -> std::borrow::Cow<'a, str> {
     if stream.is_terminal() {
         terminal_safe(text)
     } else {
