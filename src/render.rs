@@ -170,25 +170,6 @@ pub fn message_json(m: &Message) -> Json {
     })
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn trees_render_as_json_objects_by_path() {
-        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
-        assert_eq!(
-            tree_json(&t).to_string(),
-            r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
-        );
-    }
-
-    #[test]
-    fn negative_zero_is_written_as_zero() {
-        assert_eq!(number_json(-0.0).to_string(), "0.0");
-    }
-}
-
 /// Text from a graph made safe for a terminal: control characters other than newline and tab
 /// (ANSI escape sequences start with one) and the bidirectional overrides and isolates that
 /// reorder what is displayed (U+202A–U+202E, U+2066–U+2069) are written as `\u{…}` escapes.
@@ -227,6 +208,20 @@ pub fn for_stream<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn trees_render_as_json_objects_by_path() {
+        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
+        assert_eq!(
+            tree_json(&t).to_string(),
+            r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
+        );
+    }
+
+    #[test]
+    fn negative_zero_is_written_as_zero() {
+        assert_eq!(number_json(-0.0).to_string(), "0.0");
+    }
 
     #[test]
     fn terminal_safe_escapes_ansi_and_bidi_controls() {
