@@ -189,25 +189,6 @@ pub fn message_json(m: &Message) -> Json {
     })
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn trees_render_as_json_objects_by_path() {
-        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
-        assert_eq!(
-            tree_json(&t).to_string(),
-            r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
-        );
-    }
-
-    #[test]
-    fn negative_zero_is_written_as_zero() {
-        assert_eq!(number_json(-0.0).to_string(), "0.0");
-    }
-}
-
 /// Text from a graph made safe for a terminal: control characters other than newline and tab
 /// (ANSI escape sequences start with one) and the bidirectional overrides and isolates that
 /// reorder what is displayed (U+202A–U+202E, U+2066–U+2069) are written as `\u{…}` escapes.
@@ -232,7 +213,10 @@ pub fn terminal_safe(text: &str) -> std::borrow::Cow<'_, str> {
 }
 
 /// `text` made safe with [`terminal_safe`] when `stream` is a terminal, else as it is.
-pub fn for_stream(text: &str, stream: &impl std::io::IsTerminal) -> std::borrow::Cow<'_, str> {
+pub fn for_stream<'a>(
+    text: &'a str,
+    stream: &impl std::io::IsTerminal,
+) -> std::borrow::Cow<'a, str> {
     if stream.is_terminal() {
         terminal_safe(text)
     } else {
@@ -243,6 +227,20 @@ pub fn for_stream(text: &str, stream: &impl std::io::IsTerminal) -> std::borrow:
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn trees_render_as_json_objects_by_path() {
+        let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
+        assert_eq!(
+            tree_json(&t).to_string(),
+            r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
+        );
+    }
+
+    #[test]
+    fn negative_zero_is_written_as_zero() {
+        assert_eq!(number_json(-0.0).to_string(), "0.0");
+    }
 
     #[test]
     fn terminal_safe_escapes_ansi_and_bidi_controls() {

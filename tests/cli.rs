@@ -234,7 +234,7 @@ fn run_limits_end_in_exit_code_5_with_the_limit_named() {
     assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
     assert!(
         stderr(&o).contains(
-            "locus: limit: node \"x\": cross reference of 10000 (A) × 10000 (B) items at {0} \
+            "locus: limit: node \"x\": cross reference of 10000 (A) × 10000 (B) items at {0;0} \
              gives 100000000 iterations"
         ),
         "{}",

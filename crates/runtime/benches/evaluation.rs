@@ -285,5 +285,38 @@ fn chains(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, lifting, chains, threads_cpu_time);
+/// The cost per node of chains of 1,000, 10,000 and 100,000 Additions (one thread): it must not
+/// grow with the chain. Criterion times each; the ratios per node to the 1,000-node chain,
+/// measured in the same run, are printed at the end.
+fn chain_lengths(c: &mut Criterion) {
+    let registry = registry();
+    let mut group = c.benchmark_group("chain length");
+    group.sample_size(10);
+    let mut per_node = Vec::new();
+    for n in [1_000, 10_000, 100_000] {
+        let mut e = evaluator(&chain(n), &registry, 1);
+        e.evaluate();
+        assert_eq!(e.messages().count(), 0);
+        group.bench_function(format!("evaluate {n}-node chain, 1 thread"), |b| {
+            b.iter(|| rerun(&mut e));
+        });
+        let runs = (1_000_000 / n).max(3);
+        let started = std::time::Instant::now();
+        for _ in 0..runs {
+            rerun(&mut e);
+        }
+        per_node.push((n, started.elapsed().as_secs_f64() / (runs * n) as f64));
+    }
+    group.finish();
+    let base = per_node[0].1;
+    for (n, t) in per_node {
+        println!(
+            "{n}-node chain: {:.3} µs per node, {:.2}x the 1,000-node chain's",
+            t * 1e6,
+            t / base
+        );
+    }
+}
+
+criterion_group!(benches, lifting, chains, chain_lengths, threads_cpu_time);
 criterion_main!(benches);
