@@ -249,7 +249,12 @@ def sweep(
             record[ERROR] = row[ERROR]
             records.append(record)
     columns = input_names + [renamed[o] for o in outputs] + [MESSAGES, ERROR]
-    return pd.DataFrame.from_records(records, columns=columns)
+    data = {}
+    for c in columns:
+        values = [r[c] for r in records]
+        # Messages and errors stay Python objects (lists, None or text), whatever pandas infers.
+        data[c] = pd.Series(values, dtype=object) if c in (MESSAGES, ERROR) else pd.Series(values)
+    return pd.DataFrame(data, columns=columns)
 
 
 def _run_local(count, spec, batches, outputs, geometry, rows, index_of, bar):

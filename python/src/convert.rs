@@ -126,10 +126,12 @@ pub(crate) fn tree_to_py<'py>(py: Python<'py>, tree: &DataTree) -> PyResult<Boun
 
 /// The items of a tree (all branches in order) as one numpy array: numbers `(N,)` float64
 /// (nulls NaN), integers `(N,)` int64, booleans `(N,)` bool, points and vectors `(N, 3)`
-/// float64 (nulls NaN rows). Each typed column is copied once into the array.
+/// float64 (nulls NaN rows). Each typed column is copied once into the array. A tree without
+/// items takes the type of its first typed branch, else `declared` (the port's type).
 pub(crate) fn tree_to_numpy<'py>(
     py: Python<'py>,
     tree: &DataTree,
+    declared: DataType,
 ) -> Result<Bound<'py, PyAny>, String> {
     let mut data_type = None;
     for (path, b) in tree.branches() {
@@ -151,7 +153,18 @@ pub(crate) fn tree_to_numpy<'py>(
             }
         }
     }
-    let data_type = data_type.unwrap_or(DataType::Number);
+    let data_type = data_type
+        .or_else(|| {
+            tree.branches()
+                .iter()
+                .map(|(_, b)| b.data_type())
+                .find(|&t| t != DataType::Generic)
+        })
+        .unwrap_or(if declared == DataType::Generic {
+            DataType::Number
+        } else {
+            declared
+        });
     let count = tree.item_count();
     let narrowed: Vec<Branch> = tree
         .branches()
@@ -409,12 +422,7 @@ fn branch_from_array(obj: &Bound<'_, PyAny>, hint: DataType) -> Result<Branch, S
     let shape = array.shape().to_vec();
     let dtype = array.dtype();
     let kind = dtype.kind();
-    let describe = || {
-        format!(
-            "a numpy array of shape {shape:?} and dtype {}",
-            dtype.to_string()
-        )
-    };
+    let describe = || format!("a numpy array of shape {shape:?} and dtype {}", dtype);
     let read_err = |e: PyErr| e.to_string();
     match (shape.len(), kind) {
         (1, b'b') => {

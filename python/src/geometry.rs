@@ -103,6 +103,10 @@ fn numpy3<'py>(py: Python<'py>, c: [f64; 3]) -> Bound<'py, PyArray1<f64>> {
 pub struct PyPoint3(pub Point3);
 
 #[pymethods]
+#[allow(
+    clippy::wrong_self_convention,
+    reason = "Python methods take &self, even on Copy types"
+)]
 impl PyPoint3 {
     #[new]
     fn new(x: f64, y: f64, z: f64) -> Self {
@@ -195,6 +199,10 @@ impl PyPoint3 {
 pub struct PyVector3(pub Vector3);
 
 #[pymethods]
+#[allow(
+    clippy::wrong_self_convention,
+    reason = "Python methods take &self, even on Copy types"
+)]
 impl PyVector3 {
     #[new]
     fn new(x: f64, y: f64, z: f64) -> Self {
@@ -546,6 +554,10 @@ pub(crate) fn domain_like(obj: &Bound<'_, PyAny>) -> PyResult<Interval> {
 pub struct PyTransform(pub Transform);
 
 #[pymethods]
+#[allow(
+    clippy::wrong_self_convention,
+    reason = "Python methods take &self, even on Copy types"
+)]
 impl PyTransform {
     #[new]
     fn new(rows: &Bound<'_, PyAny>) -> PyResult<Self> {

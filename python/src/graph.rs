@@ -386,7 +386,15 @@ impl PyGraph {
     fn array<'py>(&mut self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
         self.ensure_evaluated(py);
         let tree = self.output_tree(name)?;
-        tree_to_numpy(py, tree)
+        let plan = self.evaluator.plan();
+        let declared = plan
+            .outputs
+            .iter()
+            .find(|(n, _, _)| n == name)
+            .map_or(DataType::Generic, |&(_, node, port)| {
+                plan.nodes[node].node_type.outputs[port].data_type
+            });
+        tree_to_numpy(py, tree, declared)
             .map_err(|m| PyTypeError::new_err(format!("output \"{name}\" has no numpy form: {m}")))
     }
 
