@@ -1,11 +1,14 @@
 //! B-reps and meshes as Python classes: `Brep` and `Mesh`.
 
-use locus_kernel::{Brep, Color, Mesh, MeshFace, Sphere};
+use locus_kernel::{
+    Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, Color, Curve, LoopKind, Mesh,
+    MeshFace, NurbsCurve, Point3, Sphere, TrimKind,
+};
 use locus_runtime::Shared;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::{PyList, PyTuple, PyType};
 
 use crate::arrays::{as_array, contiguous, points_from_py, points_to_numpy, vectors_to_numpy};
 use crate::curves::{PyCurve, PySurface};
@@ -114,6 +117,115 @@ impl PyBrep {
         let b = self.0.clone();
         py.detach(|| b.volume())
             .map_err(|e| kernel_error("B-rep", &e))
+    }
+
+    /// A B-rep from its parts (used by pickling); the topology is checked by the kernel.
+    #[classmethod]
+    fn _from_parts(
+        _cls: &Bound<'_, PyType>,
+        faces: Vec<(Bound<'_, PySurface>, Vec<usize>, bool)>,
+        loops: Vec<(usize, bool, Vec<usize>)>,
+        trims: Vec<(Bound<'_, PyCurve>, Option<usize>, bool, usize, [usize; 2])>,
+        edges: Vec<(Bound<'_, PyCurve>, [usize; 2])>,
+        vertices: Vec<[f64; 3]>,
+    ) -> PyResult<Self> {
+        let nurbs = |c: &Bound<'_, PyCurve>| -> PyResult<NurbsCurve> {
+            match &*c.get().curve {
+                Curve::Nurbs(n) => Ok(n.clone()),
+                _ => Err(PyValueError::new_err("B-rep curves are NURBS curves")),
+            }
+        };
+        let faces = faces
+            .into_iter()
+            .map(|(surface, loops, reversed)| BrepFace {
+                surface: (*surface.get().0).clone(),
+                loops,
+                reversed,
+            })
+            .collect();
+        let loops = loops
+            .into_iter()
+            .map(|(face, outer, trims)| BrepLoop {
+                face,
+                kind: if outer {
+                    LoopKind::Outer
+                } else {
+                    LoopKind::Inner
+                },
+                trims,
+            })
+            .collect();
+        let trims = trims
+            .iter()
+            .map(|(curve, edge, reversed, loop_index, vertices)| {
+                Ok(BrepTrim {
+                    curve: nurbs(curve)?,
+                    edge: *edge,
+                    reversed: *reversed,
+                    kind: TrimKind::Boundary,
+                    loop_index: *loop_index,
+                    vertices: *vertices,
+                })
+            })
+            .collect::<PyResult<_>>()?;
+        let edges = edges
+            .iter()
+            .map(|(curve, vertices)| {
+                Ok(BrepEdge {
+                    curve: nurbs(curve)?,
+                    vertices: *vertices,
+                    trims: Vec::new(),
+                })
+            })
+            .collect::<PyResult<_>>()?;
+        let vertices = vertices
+            .into_iter()
+            .map(|p| BrepVertex {
+                point: Point3::from_array(p),
+                edges: Vec::new(),
+            })
+            .collect();
+        Brep::from_parts(faces, loops, trims, edges, vertices)
+            .map(|b| Self(Shared::new(b)))
+            .map_err(|e| kernel_error("B-rep", &e))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let b = &slf.get().0;
+        let curve = |c: &NurbsCurve| -> PyResult<Bound<'py, PyCurve>> {
+            let value = locus_runtime::Value::Curve(Shared::new(Curve::Nurbs(c.clone())));
+            let curve =
+                PyCurve::from_value(&value).ok_or_else(|| PyValueError::new_err("not a curve"))?;
+            Bound::new(py, curve)
+        };
+        let faces = PyList::empty(py);
+        for f in b.faces() {
+            let surface = Bound::new(py, PySurface(Shared::new(f.surface.clone())))?;
+            faces.append((surface, f.loops.clone(), f.reversed))?;
+        }
+        let loops: Vec<(usize, bool, Vec<usize>)> = b
+            .loops()
+            .iter()
+            .map(|l| (l.face, l.kind == LoopKind::Outer, l.trims.clone()))
+            .collect();
+        let trims = PyList::empty(py);
+        for t in b.trims() {
+            trims.append((
+                curve(&t.curve)?,
+                t.edge,
+                t.reversed,
+                t.loop_index,
+                t.vertices,
+            ))?;
+        }
+        let edges = PyList::empty(py);
+        for e in b.edges() {
+            edges.append((curve(&e.curve)?, e.vertices))?;
+        }
+        let vertices: Vec<[f64; 3]> = b.vertices().iter().map(|v| v.point.to_array()).collect();
+        let rebuild = slf.get_type().getattr("_from_parts")?;
+        (rebuild, (faces, loops, trims, edges, vertices)).into_pyobject(py)
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {

@@ -210,3 +210,23 @@ def test_point_and_vector_arithmetic():
     x, y, z = a
     assert (x, y, z) == (1, 2, 3) and a[-1] == 3
     assert repr(a) == "Point3(1.0, 2.0, 3.0)"
+
+
+def test_breps_pickle_exactly_and_tampered_ones_are_refused():
+    plane = locus.Plane.from_normal((1, 2, 3), (1, 1, 1))
+    breps = [
+        locus.Brep.from_box(locus.Box(plane, (0, 1), (-2, 2), (0, 0.5))),
+        locus.Brep.sphere((1, 2, 3), 2.5),
+        locus.Brep.from_surface(locus.NurbsSurface([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]], degree_u=1, degree_v=1)),
+    ]
+    for b in breps:
+        out = round_trip(b)
+        assert out.volume() == b.volume() if b.is_solid else out.area() == b.area()
+    rebuild, (faces, loops, trims, edges, vertices) = breps[0].__reduce__()
+    broken = list(trims)
+    curve, edge, reversed_, loop_index, ends = broken[0]
+    broken[0] = (curve, edge, reversed_, 99, ends)
+    with pytest.raises(ValueError, match="invalid B-rep: .*trim 0"):
+        rebuild(faces, loops, broken, edges, vertices)
+    with pytest.raises(ValueError, match="vertex"):
+        rebuild(faces, loops, trims, edges, vertices[:3])

@@ -28,6 +28,7 @@ mod brep;
 mod brep_builders;
 mod brep_join;
 mod brep_mass;
+mod brep_parts;
 mod circle;
 mod continuity;
 mod curve;
