@@ -252,8 +252,10 @@ def sweep(
     data = {}
     for c in columns:
         values = [r[c] for r in records]
-        # Messages and errors stay Python objects (lists, None or text), whatever pandas infers.
-        data[c] = pd.Series(values, dtype=object) if c in (MESSAGES, ERROR) else pd.Series(values)
+        # Numbers make numeric columns (a failed variant's None becomes NaN); anything else
+        # (text, geometry, lists, messages, errors) stays Python objects, None included.
+        numeric = all(v is None or (isinstance(v, (int, float)) and not isinstance(v, bool)) for v in values)
+        data[c] = pd.Series(values) if numeric and c not in (MESSAGES, ERROR) else pd.Series(values, dtype=object)
     return pd.DataFrame(data, columns=columns)
 
 

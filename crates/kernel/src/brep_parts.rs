@@ -145,17 +145,21 @@ impl Brep {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Brep, Interval, OrientedBox, Plane, Sphere};
+    use crate::{
+        Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, Interval, OrientedBox, Plane,
+        Sphere,
+    };
 
-    fn parts(
-        b: &Brep,
-    ) -> (
-        Vec<crate::BrepFace>,
-        Vec<crate::BrepLoop>,
-        Vec<crate::BrepTrim>,
-        Vec<crate::BrepEdge>,
-        Vec<crate::BrepVertex>,
-    ) {
+    /// The parts of a B-rep, as `Brep::from_parts` takes them.
+    type Parts = (
+        Vec<BrepFace>,
+        Vec<BrepLoop>,
+        Vec<BrepTrim>,
+        Vec<BrepEdge>,
+        Vec<BrepVertex>,
+    );
+
+    fn parts(b: &Brep) -> Parts {
         (
             b.faces().to_vec(),
             b.loops().to_vec(),
