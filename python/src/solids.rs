@@ -14,6 +14,9 @@ use crate::arrays::{as_array, contiguous, points_from_py, points_to_numpy, vecto
 use crate::curves::{PyCurve, PySurface};
 use crate::geometry::{PyBox, kernel_error, point_like, vector_like};
 
+/// A pickled trim: curve, edge, reversed, loop index and vertices.
+type PickledTrim<'py> = (Bound<'py, PyCurve>, Option<usize>, bool, usize, [usize; 2]);
+
 /// A boundary representation: faces on NURBS surfaces bounded by trim loops, joined along
 /// edges (Rhino's polysurfaces and solids).
 ///
@@ -125,7 +128,7 @@ impl PyBrep {
         _cls: &Bound<'_, PyType>,
         faces: Vec<(Bound<'_, PySurface>, Vec<usize>, bool)>,
         loops: Vec<(usize, bool, Vec<usize>)>,
-        trims: Vec<(Bound<'_, PyCurve>, Option<usize>, bool, usize, [usize; 2])>,
+        trims: Vec<PickledTrim<'_>>,
         edges: Vec<(Bound<'_, PyCurve>, [usize; 2])>,
         vertices: Vec<[f64; 3]>,
     ) -> PyResult<Self> {

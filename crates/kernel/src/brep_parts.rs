@@ -61,14 +61,14 @@ impl Brep {
             }
         }
         for (l, lp) in loops.iter().enumerate() {
-            if !faces.get(lp.face).is_some_and(|f| f.loops.contains(&l)) {
+            if faces.get(lp.face).is_none_or(|f| !f.loops.contains(&l)) {
                 return bad(format!("B-rep loop {l} is not listed by face {}", lp.face));
             }
             if lp.trims.is_empty() {
                 return bad(format!("B-rep loop {l} has no trim"));
             }
             for &t in &lp.trims {
-                if !trims.get(t).is_some_and(|trim| trim.loop_index == l) {
+                if trims.get(t).is_none_or(|trim| trim.loop_index != l) {
                     return bad(format!(
                         "B-rep loop {l} lists trim {t}, which is not one of its trims"
                     ));
@@ -89,9 +89,9 @@ impl Brep {
             }
         }
         for (t, trim) in trims.iter().enumerate() {
-            if !loops
+            if loops
                 .get(trim.loop_index)
-                .is_some_and(|l| l.trims.contains(&t))
+                .is_none_or(|l| !l.trims.contains(&t))
             {
                 return bad(format!(
                     "B-rep trim {t} is not listed by loop {}",
