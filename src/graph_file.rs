@@ -60,19 +60,19 @@ pub(crate) fn evaluator(checked: &Checked, threads: Option<usize>) -> Result<Eva
     Ok(evaluator)
 }
 
-/// `locus run`.
-pub(crate) fn run(
+/// Reads, checks and prepares a graph for evaluation with the inputs of `--set` applied;
+/// problems are printed and become the exit code.
+pub(crate) fn prepared(
     registry: &NodeRegistry,
     path: &Path,
     sets: &[String],
-    json: bool,
     threads: Option<usize>,
-) -> u8 {
+) -> Result<Evaluator, u8> {
     let loaded = match load(registry, path) {
         Ok(l) => l,
         Err(e) => {
             e.report(path);
-            return EXIT_BAD_GRAPH;
+            return Err(EXIT_BAD_GRAPH);
         }
     };
     let file = path.display().to_string();
@@ -83,14 +83,14 @@ pub(crate) fn run(
         Ok(e) => e,
         Err(e) => {
             eprintln!("locus: {e}");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         }
     };
     let plan = &loaded.checked.plan;
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
             eprintln!("locus: --set needs NAME=VALUE, got \"{set}\"");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         };
         let name = name.trim();
         let Some(&(_, node, port)) = plan.inputs.iter().find(|(n, _, _)| n == name) else {
@@ -103,22 +103,38 @@ pub(crate) fn run(
                     known.join(", ")
                 }
             );
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         };
         let data_type = plan.nodes[node].inputs[port].port.data_type;
         match parse_literal(value, data_type) {
             Ok(tree) => {
                 if let Err(e) = evaluator.set_input(name, tree) {
                     eprintln!("locus: {e}");
-                    return EXIT_USAGE;
+                    return Err(EXIT_USAGE);
                 }
             }
             Err(e) => {
                 eprintln!("locus: --set {name}: {e}");
-                return EXIT_USAGE;
+                return Err(EXIT_USAGE);
             }
         }
     }
+    Ok(evaluator)
+}
+
+/// `locus run`.
+pub(crate) fn run(
+    registry: &NodeRegistry,
+    path: &Path,
+    sets: &[String],
+    json: bool,
+    threads: Option<usize>,
+    exports: &[std::path::PathBuf],
+) -> u8 {
+    let mut evaluator = match prepared(registry, path, sets, threads) {
+        Ok(e) => e,
+        Err(code) => return code,
+    };
     evaluator.evaluate();
     if json {
         let mut outputs = Map::new();
@@ -140,6 +156,10 @@ pub(crate) fn run(
                 out!("  {m}");
             }
         }
+    }
+    if let Err(e) = crate::export::write_files(&evaluator, exports) {
+        eprintln!("locus: {e}");
+        return crate::EXIT_EXPORT_FAILED;
     }
     if evaluator.messages().any(|m| m.level == Level::Error) {
         EXIT_RUNTIME_ERROR

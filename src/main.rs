@@ -25,6 +25,7 @@ macro_rules! out_str {
 }
 
 mod catalog;
+mod export;
 mod graph_file;
 mod render;
 mod test_graphs;
@@ -42,6 +43,8 @@ const EXIT_USAGE: u8 = 2;
 const EXIT_BAD_GRAPH: u8 = 3;
 /// Exit code: at least one graph failed its test.
 const EXIT_TEST_FAILED: u8 = 4;
+/// Exit code: an export or picture file could not be written.
+const EXIT_EXPORT_FAILED: u8 = 6;
 
 /// locus: a headless node-graph engine for computational design, with Grasshopper's semantics.
 #[derive(Debug, Parser)]
@@ -74,6 +77,30 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
         /// Number of threads (default: one per core; 1 runs everything on one thread).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        /// Also write the outputs' geometry to a file: .glb, .gltf, .obj, .stl, .svg (plan
+        /// view) or .png (repeatable).
+        #[arg(long, value_name = "FILE")]
+        export: Vec<PathBuf>,
+    },
+    /// Evaluate a graph and draw its outputs' geometry into a picture (.png) or drawing (.svg).
+    Render {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// The picture file to write (.png, or .svg for a drawing from the same view).
+        #[arg(short, long, value_name = "FILE")]
+        output: PathBuf,
+        /// The view: top, front, right or iso.
+        #[arg(long, default_value = "iso")]
+        view: String,
+        /// The picture's size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "800x600")]
+        size: String,
+        /// Give a named input a value, as with `locus run`.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Number of threads.
         #[arg(long, value_name = "N")]
         threads: Option<usize>,
     },
@@ -138,7 +165,33 @@ fn main() -> ExitCode {
             set,
             format,
             threads,
-        } => graph_file::run(&registry, &graph, &set, format == Format::Json, threads),
+            export,
+        } => graph_file::run(
+            &registry,
+            &graph,
+            &set,
+            format == Format::Json,
+            threads,
+            &export,
+        ),
+        Command::Render {
+            graph,
+            output,
+            view,
+            size,
+            set,
+            threads,
+        } => export::render(
+            &registry,
+            &export::RenderArgs {
+                graph: &graph,
+                sets: &set,
+                output: &output,
+                view: &view,
+                size: &size,
+                threads,
+            },
+        ),
         Command::Check { graphs } => graph_file::check(&registry, &graphs),
         Command::Test {
             paths,
