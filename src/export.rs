@@ -129,3 +129,40 @@ pub(crate) fn render(registry: &NodeRegistry, args: &RenderArgs<'_>) -> u8 {
         }
     }
 }
+
+/// `locus view`: evaluates a graph and writes one self-contained HTML page that shows its
+/// outputs in an orbit view with their messages; prints the page's path.
+pub(crate) fn view(
+    registry: &NodeRegistry,
+    graph: &Path,
+    sets: &[String],
+    output: Option<&Path>,
+    threads: Option<usize>,
+) -> u8 {
+    let mut evaluator = match crate::graph_file::prepared(registry, graph, sets, threads) {
+        Ok(e) => e,
+        Err(code) => return code,
+    };
+    evaluator.evaluate();
+    let scene = scene(&evaluator);
+    let messages: Vec<serde_json::Value> = evaluator.messages().map(crate::render::message_json).collect();
+    let title = graph.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let page = match locus_export::to_html(&scene, &serde_json::Value::Array(messages), &title) {
+        Ok(page) => page,
+        Err(e) => {
+            eprintln!("locus: {e}");
+            return crate::EXIT_EXPORT_FAILED;
+        }
+    };
+    let file = output.map_or_else(|| graph.with_extension("html"), Path::to_path_buf);
+    match write_atomically(&file, page.as_bytes()) {
+        Ok(()) => {
+            println!("{}", file.display());
+            0
+        }
+        Err(e) => {
+            eprintln!("locus: cannot write {}: {e}", file.display());
+            crate::EXIT_EXPORT_FAILED
+        }
+    }
+}

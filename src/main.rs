@@ -104,6 +104,21 @@ enum Command {
         #[arg(long, value_name = "N")]
         threads: Option<usize>,
     },
+    /// Evaluate a graph and write one self-contained HTML page that shows its outputs in an
+    /// orbit view, with toggles per output and branch, click-to-inspect and the messages.
+    View {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// The page to write (default: the graph's name with .html).
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
+        /// Give a named input a value, as with `locus run`.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Number of threads.
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+    },
     /// Check a graph and print every problem with file:line:column, node and port.
     Check {
         /// The graph files.
@@ -192,6 +207,12 @@ fn main() -> ExitCode {
                 threads,
             },
         ),
+        Command::View {
+            graph,
+            output,
+            set,
+            threads,
+        } => export::view(&registry, &graph, &set, output.as_deref(), threads),
         Command::Check { graphs } => graph_file::check(&registry, &graphs),
         Command::Test {
             paths,

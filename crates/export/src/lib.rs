@@ -25,6 +25,7 @@ mod stl;
 mod svg;
 mod tessellate;
 mod view;
+mod viewer;
 
 use std::path::Path;
 
@@ -36,6 +37,7 @@ pub use crate::stl::to_stl;
 pub use crate::svg::to_svg;
 pub use crate::tessellate::{DEFAULT_CHORD_TOLERANCE, DEFAULT_MAX_SEGMENTS, Tessellation};
 pub use crate::view::View;
+pub use crate::viewer::to_html;
 
 /// Why an export failed.
 #[derive(Debug, thiserror::Error)]
