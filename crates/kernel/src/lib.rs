@@ -55,6 +55,11 @@ pub use crate::geometry::plane::{Plane, perpendicular_to};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::mesh::parameters::{
+    COARSEST_MESH_ANGLE, DEFAULT_MESH_MAX_ANGLE, DEFAULT_MESH_MAX_CHORD_DEVIATION,
+    DEFAULT_MESH_MAX_EDGE_LENGTH, DEFAULT_MESH_MIN_EDGE_LENGTH, FINEST_MESH_ANGLE,
+    MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters,
+};
 pub use crate::mesh::{Color, Mesh, MeshFace};
 pub use crate::surface::NurbsSurface;
 pub use crate::surface::closest_point::SurfaceClosestPoint;

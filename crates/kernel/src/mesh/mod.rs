@@ -5,6 +5,11 @@
 //! openNURBS's `ON_MeshFace` does, so that faces are one fixed-size array and a mesh converts to
 //! and from Rhino's without copying face by face.
 
+pub(crate) mod parameters;
+mod polyline;
+mod sampling;
+mod tessellate;
+
 use std::collections::HashMap;
 
 use crate::{BoundingBox, Error, Point3, Result, Transform, Vector3};
