@@ -145,8 +145,14 @@ pub(crate) fn view(
     };
     evaluator.evaluate();
     let scene = scene(&evaluator);
-    let messages: Vec<serde_json::Value> = evaluator.messages().map(crate::render::message_json).collect();
-    let title = graph.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let messages: Vec<serde_json::Value> = evaluator
+        .messages()
+        .map(crate::render::message_json)
+        .collect();
+    let title = graph
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
     let page = match locus_export::to_html(&scene, &serde_json::Value::Array(messages), &title) {
         Ok(page) => page,
         Err(e) => {

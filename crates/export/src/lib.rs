@@ -2,7 +2,7 @@
 //! binary STL, SVG plan drawings and PNG pictures drawn in pure Rust.
 //!
 //! Every format reads a [`Scene`]: the named outputs of an evaluation, turned into meshes,
-//! polylines and points once (curves within a chord tolerance, surfaces and B-reps as meshes),
+//! polylines and points once (through the kernel's tessellation: curves as polylines, surfaces and B-reps as meshes),
 //! each item remembering its output, tree path and index.
 //!
 //! ```
@@ -35,7 +35,7 @@ pub use crate::raster::{MAX_PICTURE_SIDE, PictureOptions, drawn_extent, render, 
 pub use crate::scene::{Scene, SceneObject};
 pub use crate::stl::to_stl;
 pub use crate::svg::to_svg;
-pub use crate::tessellate::{DEFAULT_CHORD_TOLERANCE, DEFAULT_MAX_SEGMENTS, Tessellation};
+pub use crate::tessellate::Tessellation;
 pub use crate::view::View;
 pub use crate::viewer::to_html;
 

@@ -114,9 +114,13 @@ fn fill(object: &mut SceneObject, value: &Value, settings: &Tessellation) -> Res
     match value {
         Value::Point(p) => object.points.push(*p),
         Value::Line(l) => object.lines.push(vec![l.from, l.to]),
-        Value::Circle(c) => object.lines.push(tessellate::curve(&(*c).into(), settings)),
-        Value::Arc(a) => object.lines.push(tessellate::curve(&(*a).into(), settings)),
-        Value::Curve(c) => object.lines.push(tessellate::curve(c, settings)),
+        Value::Circle(c) => object
+            .lines
+            .push(tessellate::curve(&(*c).into(), settings)?),
+        Value::Arc(a) => object
+            .lines
+            .push(tessellate::curve(&(*a).into(), settings)?),
+        Value::Curve(c) => object.lines.push(tessellate::curve(c, settings)?),
         Value::Plane(p) => {
             // A plane is drawn as Grasshopper previews it: a small square grid is too much for
             // exports, so its origin and axes.
@@ -129,11 +133,13 @@ fn fill(object: &mut SceneObject, value: &Value, settings: &Tessellation) -> Res
         Value::Box(b) => {
             let brep = locus_kernel::Brep::from_box(b).map_err(|e| e.to_string())?;
             object.mesh = Some(tessellate::brep(&brep, settings)?);
-            object.lines.extend(tessellate::brep_edges(&brep, settings));
+            object
+                .lines
+                .extend(tessellate::brep_edges(&brep, settings)?);
         }
         Value::Brep(b) => {
             object.mesh = Some(tessellate::brep(b, settings)?);
-            object.lines.extend(tessellate::brep_edges(b, settings));
+            object.lines.extend(tessellate::brep_edges(b, settings)?);
         }
         _ => return Ok(false),
     }
@@ -191,17 +197,15 @@ mod tests {
             radius: 10.0,
         };
         let mut scene = Scene::new();
-        let settings = Tessellation::default();
+        let mut settings = Tessellation::default();
+        settings.parameters.max_chord_deviation = 0.01;
         scene.add_output("C", &DataTree::from_item(c), &settings);
         let line = &scene.objects[0].lines[0];
         assert_eq!(line.first(), line.last());
         for w in line.windows(2) {
             let mid = w[0] + (w[1] - w[0]) * 0.5;
             let sagitta = 10.0 - (mid - Point3::ORIGIN).length();
-            assert!(
-                sagitta <= settings.chord_tolerance * 1.0001,
-                "sagitta {sagitta}"
-            );
+            assert!(sagitta <= 0.01 * 1.0001, "sagitta {sagitta}");
         }
     }
 }
