@@ -114,20 +114,20 @@ pub(crate) fn evaluator(checked: &Checked, threads: Option<usize>) -> Result<Eva
     Ok(evaluator)
 }
 
-/// `locus run`.
-pub(crate) fn run(
+/// Reads, checks and prepares a graph for evaluation: threads, limits and the inputs of
+/// `--set` applied, `--output` names checked. Problems are printed and become the exit code.
+pub(crate) fn prepared(
     registry: &NodeRegistry,
     path: &Path,
     sets: &[String],
-    json: bool,
     threads: Option<usize>,
     run_limits: &RunLimits,
-) -> u8 {
+) -> Result<Evaluator, u8> {
     let loaded = match load(registry, path) {
         Ok(l) => l,
         Err(e) => {
             e.report(path);
-            return EXIT_BAD_GRAPH;
+            return Err(EXIT_BAD_GRAPH);
         }
     };
     let file = path.display().to_string();
@@ -139,14 +139,14 @@ pub(crate) fn run(
         Ok(e) => e,
         Err(e) => {
             eprintln!("locus: {e}");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         }
     };
     match run_limits.limits() {
         Ok(limits) => evaluator.set_limits(limits),
         Err(e) => {
             eprintln!("locus: {e}");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         }
     }
     let known: Vec<&str> = evaluator.output_names().collect();
@@ -163,18 +163,42 @@ pub(crate) fn run(
                 known.join(", ")
             }
         );
-        return EXIT_USAGE;
+        return Err(EXIT_USAGE);
     }
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
             eprintln!("locus: --set needs NAME=VALUE, got \"{set}\"");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         };
         if let Err(e) = evaluator.set_input_text(name.trim(), value) {
             eprintln!("locus: --set: {e}");
-            return EXIT_USAGE;
+            return Err(EXIT_USAGE);
         }
     }
+    Ok(evaluator)
+}
+
+impl RunLimits {
+    /// Whether `--output` lets this output through (all do when none is named).
+    pub(crate) fn selects(&self, name: &str) -> bool {
+        self.outputs.is_empty() || self.outputs.iter().any(|o| o == name)
+    }
+}
+
+/// `locus run`.
+pub(crate) fn run(
+    registry: &NodeRegistry,
+    path: &Path,
+    sets: &[String],
+    json: bool,
+    threads: Option<usize>,
+    run_limits: &RunLimits,
+    exports: &[std::path::PathBuf],
+) -> u8 {
+    let mut evaluator = match prepared(registry, path, sets, threads, run_limits) {
+        Ok(e) => e,
+        Err(code) => return code,
+    };
     evaluator.evaluate();
     let mut limit_hit = false;
     if let Some(hit) = evaluator.limit_hit() {
@@ -191,9 +215,7 @@ pub(crate) fn run(
     }
     let selected: Vec<(&str, &locus_runtime::DataTree)> = evaluator
         .outputs()
-        .filter(|(name, _)| {
-            run_limits.outputs.is_empty() || run_limits.outputs.iter().any(|o| o == name)
-        })
+        .filter(|(name, _)| run_limits.selects(name))
         .collect();
     let max_bytes = match run_limits.max_output_bytes {
         0 => u64::MAX,
@@ -253,6 +275,10 @@ pub(crate) fn run(
         eprintln!(
             "locus: limit: the output was truncated at {max_bytes} bytes (--max-output-bytes)"
         );
+    }
+    if let Err(e) = crate::export::write_files(&evaluator, run_limits, exports) {
+        eprintln!("locus: {e}");
+        return crate::EXIT_EXPORT_FAILED;
     }
     if limit_hit || truncated {
         EXIT_LIMIT

@@ -26,6 +26,7 @@ macro_rules! out_str {
 }
 
 mod catalog;
+mod export;
 mod graph_file;
 mod render;
 mod serve;
@@ -46,6 +47,8 @@ const EXIT_BAD_GRAPH: u8 = 3;
 const EXIT_TEST_FAILED: u8 = 4;
 /// Exit code: a run limit was hit (time, items, output size); see `docs/limits.md`.
 const EXIT_LIMIT: u8 = 5;
+/// Exit code: an export or picture file could not be written.
+const EXIT_EXPORT_FAILED: u8 = 6;
 
 /// locus: a headless node-graph engine for computational design, with Grasshopper's semantics.
 #[derive(Debug, Parser)]
@@ -79,6 +82,49 @@ enum Command {
         format: Format,
         /// Number of threads (default: one per core; 1 runs everything on one thread; more than
         /// 4 per core are capped with a warning).
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+        threads: Option<u32>,
+        #[command(flatten)]
+        limits: graph_file::RunLimits,
+        /// Also write the outputs' geometry to a file: .glb, .gltf, .obj, .stl, .svg (plan
+        /// view) or .png (repeatable; `--output` chooses the outputs).
+        #[arg(long, value_name = "FILE")]
+        export: Vec<PathBuf>,
+    },
+    /// Evaluate a graph and draw its outputs' geometry into a picture (.png) or drawing (.svg).
+    Render {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// The picture file to write (.png, or .svg for a drawing from the same view).
+        #[arg(short = 'o', long = "to", value_name = "FILE")]
+        file: PathBuf,
+        /// The view: top, front, right or iso.
+        #[arg(long, default_value = "iso")]
+        view: String,
+        /// The picture's size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "800x600")]
+        size: String,
+        /// Give a named input a value, as with `locus run`.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Number of threads.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+        threads: Option<u32>,
+        #[command(flatten)]
+        limits: graph_file::RunLimits,
+    },
+    /// Evaluate a graph and write one self-contained HTML page that shows its outputs in an
+    /// orbit view, with toggles per output and branch, click-to-inspect and the messages.
+    View {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// The page to write (default: the graph's name with .html).
+        #[arg(short = 'o', long = "to", value_name = "FILE")]
+        file: Option<PathBuf>,
+        /// Give a named input a value, as with `locus run`.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Number of threads.
         #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
         threads: Option<u32>,
         #[command(flatten)]
@@ -149,11 +195,47 @@ fn main() -> ExitCode {
             format,
             threads,
             limits,
+            export,
         } => graph_file::run(
             &registry,
             &graph,
             &set,
             format == Format::Json,
+            threads.map(|n| n as usize),
+            &limits,
+            &export,
+        ),
+        Command::Render {
+            graph,
+            file,
+            view,
+            size,
+            set,
+            threads,
+            limits,
+        } => export::render(
+            &registry,
+            &export::RenderArgs {
+                graph: &graph,
+                sets: &set,
+                output: &file,
+                view: &view,
+                size: &size,
+                threads: threads.map(|n| n as usize),
+                limits: &limits,
+            },
+        ),
+        Command::View {
+            graph,
+            file,
+            set,
+            threads,
+            limits,
+        } => export::view(
+            &registry,
+            &graph,
+            &set,
+            file.as_deref(),
             threads.map(|n| n as usize),
             &limits,
         ),

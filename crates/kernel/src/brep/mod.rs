@@ -383,7 +383,7 @@ impl Brep {
 
     /// Whether face `f` is its whole surface: one loop, every trim along a side of the
     /// parameter rectangle.
-    pub(crate) fn is_untrimmed(&self, f: usize) -> bool {
+    pub fn is_untrimmed(&self, f: usize) -> bool {
         let face = &self.faces[f];
         face.loops.len() == 1
             && self.loops[face.loops[0]]

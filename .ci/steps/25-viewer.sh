@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The viewer page of `locus view` in headless Chromium (Debian's package, driven by
+# playwright-core from npm): loads without console errors or network requests, holds the
+# expected objects, and draws a picture that is not blank. Screenshots are kept as artifacts
+# in target/artifacts/viewer/.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+if ! command -v chromium > /dev/null; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium > /dev/null
+fi
+(cd crates/export/e2e && npm ci --no-audit --no-fund --loglevel=error)
+cargo build --quiet --bin locus
+out="$PWD/target/artifacts/viewer"
+mkdir -p "$out"
+pages=()
+for graph in tangent_spheres exploded_box surface_singularity; do
+  ./target/debug/locus view "graphs/$graph.ron" -o "$out/$graph.html" > /dev/null
+  pages+=("$out/$graph.html")
+done
+node crates/export/e2e/viewer.mjs "${pages[@]}"
