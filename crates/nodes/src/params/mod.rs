@@ -9,7 +9,9 @@
 pub mod brep;
 pub mod curve;
 pub mod geometry;
+pub mod graph_mapper;
 pub mod primitive;
+pub mod shapes;
 pub mod surface;
 
 use locus_runtime::NodeRegistry;
@@ -21,4 +23,6 @@ pub fn register(registry: &mut NodeRegistry) {
     curve::register(registry);
     surface::register(registry);
     brep::register(registry);
+    shapes::register(registry);
+    graph_mapper::register(registry);
 }
