@@ -2,7 +2,8 @@
 // Run with Mono (Debian packages mono-mcs and mono-runtime):
 //   mcs tools/oracle/dotnet_random.cs -out:/tmp/r.exe && mono /tmp/r.exe
 // and wrap the lines in {"generator": "System.Random (Mono 6.8)", "cases": [...]} as
-// crates/nodes/tests/data/dotnet_random.json.
+// crates/nodes/tests/data/dotnet_random.json, with each double quoted as a string (JSON readers
+// do not all round decimal text correctly).
 using System;
 class P { static void Main() {
   foreach (int seed in new int[]{0, 1, 2, 42, -7, 123456789, int.MaxValue, int.MinValue}) {

@@ -129,7 +129,11 @@ pub fn circle_3pt() -> NodeType {
         .output(Port::new("Plane", "P", DataType::Plane).doc("The circle's plane, at its centre."))
         .output(Port::new("Radius", "R", DataType::Number).doc("The circle's radius."))
         .solve(|s| {
-            let (a, b, c) = (*s.item::<Point3>(0)?, *s.item::<Point3>(1)?, *s.item::<Point3>(2)?);
+            let (a, b, c) = (
+                *s.item::<Point3>(0)?,
+                *s.item::<Point3>(1)?,
+                *s.item::<Point3>(2)?,
+            );
             let circle = Circle::from_three_points(a, b, c)?;
             s.set(0, circle);
             s.set(1, circle.plane);
@@ -153,7 +157,11 @@ pub fn arc_3pt() -> NodeType {
         .output(Port::new("Plane", "P", DataType::Plane).doc("The arc's plane, at its centre."))
         .output(Port::new("Radius", "R", DataType::Number).doc("The arc's radius."))
         .solve(|s| {
-            let (a, b, c) = (*s.item::<Point3>(0)?, *s.item::<Point3>(1)?, *s.item::<Point3>(2)?);
+            let (a, b, c) = (
+                *s.item::<Point3>(0)?,
+                *s.item::<Point3>(1)?,
+                *s.item::<Point3>(2)?,
+            );
             let arc = Arc::from_three_points(a, b, c)?;
             s.set(0, arc);
             s.set(1, arc.circle.plane);
@@ -227,7 +235,9 @@ pub fn polygon() -> NodeType {
         )
         .input(
             Port::new("Segments", "S", DataType::Integer)
-                .doc(&format!("The number of sides, 3 to {MAX_SEQUENCE_LENGTH}; default 6."))
+                .doc(&format!(
+                    "The number of sides, 3 to {MAX_SEQUENCE_LENGTH}; default 6."
+                ))
                 .default_value(6_i64),
         )
         .input(
@@ -246,7 +256,9 @@ pub fn polygon() -> NodeType {
                 .ok()
                 .filter(|n| (3..=MAX_SEQUENCE_LENGTH).contains(n))
                 .ok_or_else(|| {
-                    NodeError(format!("segments S must be 3 to {MAX_SEQUENCE_LENGTH}, not {n}"))
+                    NodeError(format!(
+                        "segments S must be 3 to {MAX_SEQUENCE_LENGTH}, not {n}"
+                    ))
                 })?;
             let circle = Circle::new(plane, r)?;
             let mut pts: Vec<Point3> = (0..sides)
@@ -315,7 +327,13 @@ pub fn rectangle() -> NodeType {
                 )));
             }
             let at = |u: f64, v: f64| plane.origin + plane.x_axis * u + plane.y_axis * v;
-            let poly = Polyline::new(vec![at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1), at(x0, y0)])?;
+            let poly = Polyline::new(vec![
+                at(x0, y0),
+                at(x1, y0),
+                at(x1, y1),
+                at(x0, y1),
+                at(x0, y0),
+            ])?;
             let length = poly.length();
             s.set(0, curve_of(poly));
             s.set(1, length);
@@ -459,13 +477,27 @@ mod tests {
         assert!(close(c.start_point(), p(0.0, -1.0, 0.0)));
         assert_eq!(only::<f64>(&r, 1), 10.0);
         for bad in [
-            NodeCall::new(&polygon()).skip_input().skip_input().input(DataTree::from_item(2_i64)).run(),
-            NodeCall::new(&polygon()).skip_input().skip_input().skip_input().input(DataTree::from_item(0.5)).run(),
-            NodeCall::new(&rectangle()).skip_input().input(DataTree::from_item(Interval::new(1.0, 1.0))).run(),
-            NodeCall::new(&rectangle()).input(DataTree::from_value(Value::Plane(Plane {
-                x_axis: Vector3::ZERO,
-                ..Plane::WORLD_XY
-            }))).run(),
+            NodeCall::new(&polygon())
+                .skip_input()
+                .skip_input()
+                .input(DataTree::from_item(2_i64))
+                .run(),
+            NodeCall::new(&polygon())
+                .skip_input()
+                .skip_input()
+                .skip_input()
+                .input(DataTree::from_item(0.5))
+                .run(),
+            NodeCall::new(&rectangle())
+                .skip_input()
+                .input(DataTree::from_item(Interval::new(1.0, 1.0)))
+                .run(),
+            NodeCall::new(&rectangle())
+                .input(DataTree::from_value(Value::Plane(Plane {
+                    x_axis: Vector3::ZERO,
+                    ..Plane::WORLD_XY
+                })))
+                .run(),
         ] {
             assert_eq!(messages(&bad, Level::Error).len(), 1, "{:?}", bad.messages);
         }
@@ -473,7 +505,8 @@ mod tests {
 
     #[test]
     fn curve_middle_is_halfway_along_the_length() {
-        let poly = Polyline::new(vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(1.0, 3.0, 0.0)]).unwrap();
+        let poly =
+            Polyline::new(vec![p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(1.0, 3.0, 0.0)]).unwrap();
         let r = NodeCall::new(&curve_middle())
             .input(DataTree::from_item(Shared::new(Curve::from(poly))))
             .run();

@@ -33,7 +33,8 @@ fn operator(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Mass Addition \[MA\]: the sum of all items of a list, and the running sums.
 pub fn mass_addition() -> NodeType {
     mass(
-        operator(MASS_ADDITION, "Mass Addition", "MA").gh_guid("5b850221-b527-4bd6-8c62-e94168cd6efa"),
+        operator(MASS_ADDITION, "Mass Addition", "MA")
+            .gh_guid("5b850221-b527-4bd6-8c62-e94168cd6efa"),
         BinaryOp::Add,
         "Adds all items of a list: numbers, vectors or points, by the rules of the Addition \
          node (a point plus a vector is the moved point). Null items are skipped. Partial \
@@ -250,15 +251,24 @@ mod tests {
 
     #[test]
     fn bad_lists_give_messages_not_panics() {
-        // Empty: a null and a warning.
+        // An empty list is a gap: the runtime does not call the node, and there is no result.
         let r = NodeCall::new(&mass_addition())
             .input(DataTree::from_branches([(
                 TreePath::new(vec![0]),
                 Branch::new(DataType::Number),
             )]))
             .run();
+        assert!(r.messages.is_empty());
+        assert!(values(&r.outputs[0]).iter().all(Option::is_none));
+        // A list of nulls only: a null and a warning.
+        let r = NodeCall::new(&mass_addition())
+            .input(generic(vec![None, None]))
+            .run();
         assert!(is_null(&r, 0));
-        assert_eq!(messages(&r, Level::Warning), ["the list has no items to combine"]);
+        assert_eq!(
+            messages(&r, Level::Warning),
+            ["the list has no items to combine"]
+        );
         // Overflow: NaN and one warning.
         let r = NodeCall::new(&mass_addition())
             .input(DataTree::from_list(vec![f64::MAX, f64::MAX, 1.0]))

@@ -310,7 +310,10 @@ mod tests {
             .input(generic(vec![None, None]))
             .run();
         assert!(is_null(&r, 0));
-        assert_eq!(messages(&r, Level::Warning), ["the list has no items to average"]);
+        assert_eq!(
+            messages(&r, Level::Warning),
+            ["the list has no items to average"]
+        );
         let r = NodeCall::new(&average())
             .input(generic(vec![Some(Value::Text("x".into()))]))
             .run();
@@ -368,7 +371,14 @@ mod tests {
             .input(DataTree::from_list(vec![180.0, 90.0, -45.0]))
             .run();
         let rad = numbers(&r.outputs[0]);
-        assert_eq!(rad, [std::f64::consts::PI, std::f64::consts::FRAC_PI_2, -std::f64::consts::FRAC_PI_4]);
+        assert_eq!(
+            rad,
+            [
+                std::f64::consts::PI,
+                std::f64::consts::FRAC_PI_2,
+                -std::f64::consts::FRAC_PI_4
+            ]
+        );
         let r = NodeCall::new(&degrees())
             .input(DataTree::from_list(rad))
             .run();

@@ -9,7 +9,9 @@
 use std::sync::Arc;
 
 use locus_kernel::Interval;
-use locus_runtime::{DataType, NodeConfig, NodeError, NodeRegistry, NodeType, Port, Prepared, Value};
+use locus_runtime::{
+    DataType, NodeConfig, NodeError, NodeRegistry, NodeType, Port, Prepared, Value,
+};
 
 /// Id of [`graph_mapper`].
 pub const GRAPH_MAPPER: &str = "params.graph_mapper";
@@ -285,10 +287,19 @@ mod tests {
 
     #[test]
     fn linear_parabola_and_sine_graphs() {
-        assert_eq!(map("linear", "", vec![0.0, 0.25, 1.0, 2.0, -1.0]), [0.0, 0.25, 1.0, 1.0, 0.0]);
+        assert_eq!(
+            map("linear", "", vec![0.0, 0.25, 1.0, 2.0, -1.0]),
+            [0.0, 0.25, 1.0, 1.0, 0.0]
+        );
         assert_eq!(map("linear", "1, 0", vec![0.25]), [0.75]);
-        assert!(close(&map("parabola", "", vec![0.0, 0.5, 0.75]), &[0.0, 1.0, 0.75]));
-        assert!(close(&map("sine", "", vec![0.0, 0.25, 0.75]), &[0.5, 1.0, 0.0]));
+        assert!(close(
+            &map("parabola", "", vec![0.0, 0.5, 0.75]),
+            &[0.0, 1.0, 0.75]
+        ));
+        assert!(close(
+            &map("sine", "", vec![0.0, 0.25, 0.75]),
+            &[0.5, 1.0, 0.0]
+        ));
     }
 
     #[test]
@@ -297,7 +308,11 @@ mod tests {
         assert!(close(&y[..3], &[0.0, 0.5, 1.0]), "{y:?}");
         assert!(y[3] < 0.1 && y[4] > 0.9, "{y:?}");
         // The straight Bézier is the diagonal.
-        let y = map("bezier", "0.3333333333333333, 0.3333333333333333, 0.6666666666666666, 0.6666666666666666", vec![0.2, 0.7]);
+        let y = map(
+            "bezier",
+            "0.3333333333333333, 0.3333333333333333, 0.6666666666666666, 0.6666666666666666",
+            vec![0.2, 0.7],
+        );
         assert!(close(&y, &[0.2, 0.7]), "{y:?}");
     }
 

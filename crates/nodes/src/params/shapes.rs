@@ -303,14 +303,30 @@ mod tests {
     #[test]
     fn rectangle_param_keeps_rectangles_and_rejects_other_curves() {
         let p = |x: f64, y: f64| Point3::new(x, y, 0.0);
-        let rect = Polyline::new(vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)])
-            .unwrap();
+        let rect = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(2.0, 0.0),
+            p(2.0, 1.0),
+            p(0.0, 1.0),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         let r = NodeCall::new(&rectangle()).input(one(curve(rect))).run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
-        let skew = Polyline::new(vec![p(0.0, 0.0), p(2.0, 0.0), p(3.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)])
-            .unwrap();
+        let skew = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(2.0, 0.0),
+            p(3.0, 1.0),
+            p(0.0, 1.0),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         let open = Polyline::new(vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 1.0), p(0.0, 1.0)]).unwrap();
-        for bad in [curve(skew), curve(open), curve(Line::new(p(0.0, 0.0), p(1.0, 0.0)))] {
+        for bad in [
+            curve(skew),
+            curve(open),
+            curve(Line::new(p(0.0, 0.0), p(1.0, 0.0))),
+        ] {
             let r = NodeCall::new(&rectangle()).input(one(bad)).run();
             let e = messages(&r, Level::Error);
             assert_eq!(e.len(), 1);

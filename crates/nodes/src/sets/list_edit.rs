@@ -76,7 +76,11 @@ pub fn sub_list() -> NodeType {
              them backwards. With Wrap, indices outside the list wrap around it; without, the \
              domain is clipped to the list. Index lists the index in L of every item taken.",
         )
-        .input(generic_list("List", "L", "The list to take items from, of any type."))
+        .input(generic_list(
+            "List",
+            "L",
+            "The list to take items from, of any type.",
+        ))
         .input(
             Port::new("Domain", "D", DataType::Domain)
                 .doc("The domain of indices to take, ends included."),
@@ -86,7 +90,11 @@ pub fn sub_list() -> NodeType {
                 .doc("Whether indices wrap around the list; default false.")
                 .default_value(false),
         )
-        .output(generic_list("List", "L", "The items whose indices are in D."))
+        .output(generic_list(
+            "List",
+            "L",
+            "The items whose indices are in D.",
+        ))
         .output(
             Port::new("Index", "I", DataType::Integer)
                 .list()
@@ -170,7 +178,11 @@ pub fn insert_items() -> NodeType {
              Wrap, indices wrap around the positions 0 to length; without, an index outside \
              them is skipped with a warning.",
         )
-        .input(generic_list("List", "L", "The list to insert into, of any type."))
+        .input(generic_list(
+            "List",
+            "L",
+            "The list to insert into, of any type.",
+        ))
         .input(generic_list("Item", "I", "The items to insert; optional.").optional())
         .input(
             Port::new("Indices", "i", DataType::Integer)
@@ -182,7 +194,11 @@ pub fn insert_items() -> NodeType {
                 .doc("Whether indices wrap around the list; default false.")
                 .default_value(false),
         )
-        .output(generic_list("List", "L", "The list with the items inserted."))
+        .output(generic_list(
+            "List",
+            "L",
+            "The list with the items inserted.",
+        ))
         .solve(|s| {
             let list = branch_of(s, 0);
             let items = branch_of(s, 1);
@@ -229,7 +245,11 @@ pub fn replace_items() -> NodeType {
              With Wrap, indices wrap around the list; without, an index outside it is skipped \
              with a warning.",
         )
-        .input(generic_list("List", "L", "The list to change, of any type."))
+        .input(generic_list(
+            "List",
+            "L",
+            "The list to change, of any type.",
+        ))
         .input(generic_list("Item", "I", "The replacement items; optional.").optional())
         .input(
             Port::new("Indices", "i", DataType::Integer)
@@ -242,7 +262,11 @@ pub fn replace_items() -> NodeType {
                 .doc("Whether indices wrap around the list; default true.")
                 .default_value(true),
         )
-        .output(generic_list("List", "L", "The list with the items replaced."))
+        .output(generic_list(
+            "List",
+            "L",
+            "The list with the items replaced.",
+        ))
         .solve(|s| {
             let list = branch_of(s, 0);
             let items = branch_of(s, 1);
@@ -290,9 +314,9 @@ fn pattern(s: &Solve<'_>) -> Result<Vec<i64>, NodeError> {
             Value::Text(t) => t.trim().parse::<i64>().ok(),
             _ => None,
         };
-        out.push(i.ok_or_else(|| {
-            NodeError(format!("pattern item {k} ({v:?}) is not a stream index"))
-        })?);
+        out.push(
+            i.ok_or_else(|| NodeError(format!("pattern item {k} ({v:?}) is not a stream index")))?,
+        );
     }
     Ok(out)
 }
@@ -332,7 +356,11 @@ pub fn pick_n_choose() -> NodeType {
                     .ok()
                     .and_then(|p| streams.get(p))
                     .ok_or_else(|| no_stream(p, streams.len()))?;
-                out.push(if k < stream.len() { stream.value(k) } else { None });
+                out.push(if k < stream.len() {
+                    stream.value(k)
+                } else {
+                    None
+                });
             }
             s.set_list_values(0, out);
             Ok(())
@@ -394,11 +422,7 @@ pub fn weave() -> NodeType {
                     }
                 }
             }
-            let left: usize = streams
-                .iter()
-                .zip(&next)
-                .map(|(b, &n)| b.len() - n)
-                .sum();
+            let left: usize = streams.iter().zip(&next).map(|(b, &n)| b.len() - n).sum();
             if left > 0 {
                 s.warning(format!(
                     "{left} items of streams the pattern does not name were left out"
@@ -428,11 +452,21 @@ pub fn sift_pattern() -> NodeType {
             Port::new("Sift Pattern", "P", DataType::Integer)
                 .list()
                 .optional()
-                .doc("The output index of each item, repeated along the list; without one (or \
-                      with an empty list) [0, 1]."),
+                .doc(
+                    "The output index of each item, repeated along the list; without one (or \
+                      with an empty list) [0, 1].",
+                ),
         )
-        .output(generic_list("Output 0", "0", "The items sifted to output 0, nulls elsewhere."))
-        .output(generic_list("Output 1", "1", "The items sifted to output 1, nulls elsewhere."))
+        .output(generic_list(
+            "Output 0",
+            "0",
+            "The items sifted to output 0, nulls elsewhere.",
+        ))
+        .output(generic_list(
+            "Output 1",
+            "1",
+            "The items sifted to output 1, nulls elsewhere.",
+        ))
         .solve(|s| {
             let list = branch_of(s, 0);
             let mut pattern = match s.branch(1) {
@@ -576,9 +610,7 @@ fn invalid_reason(v: &Value) -> Option<String> {
     match v {
         Value::Number(x) if !x.is_finite() => bad(&format!("the number {x} is not finite")),
         Value::Point(p) if !p.is_finite() => bad("the point has a coordinate that is not finite"),
-        Value::Vector(x) if !x.is_finite() => {
-            bad("the vector has a component that is not finite")
-        }
+        Value::Vector(x) if !x.is_finite() => bad("the vector has a component that is not finite"),
         Value::Domain(d) if !(d.t0.is_finite() && d.t1.is_finite()) => {
             bad("the domain has an end that is not finite")
         }
@@ -589,8 +621,11 @@ fn invalid_reason(v: &Value) -> Option<String> {
         Value::Circle(c) if !(c.radius.is_finite() && c.radius > 0.0) => {
             bad("the circle has no positive radius")
         }
-        Value::Arc(a) if !(a.circle.radius.is_finite() && a.circle.radius > 0.0)
-            || !(a.angle.length().is_finite() && a.angle.length() != 0.0) =>
+        Value::Arc(a)
+            if !(a.circle.radius.is_finite()
+                && a.circle.radius > 0.0
+                && a.angle.length().is_finite()
+                && a.angle.length() != 0.0) =>
         {
             bad("the arc has no positive radius or no angle")
         }
@@ -757,7 +792,7 @@ mod tests {
             .input(generic("{0}:[\"a0\"]"))
             .input(generic("{0}:[\"b0\", \"b1\", \"b2\"]"))
             .run();
-        assert_eq!(texts(&r.outputs[0]), ["null", "b1", "b2", "null"]);
+        assert_eq!(texts(&r.outputs[0]), ["a0", "b1", "b2", "null"]);
         let r = NodeCall::new(&pick_n_choose())
             .input(tree("{0}:[2]"))
             .input(generic("{0}:[1]"))
@@ -872,7 +907,12 @@ mod tests {
         );
         assert_eq!(
             texts(&r.outputs[2]),
-            ["Valid Number", "Null", "Invalid: the number NaN is not finite", "Valid Text"]
+            [
+                "Valid Number",
+                "Null",
+                "Invalid: the number NaN is not finite",
+                "Valid Text"
+            ]
         );
     }
 }

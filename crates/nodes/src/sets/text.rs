@@ -114,7 +114,9 @@ pub fn text_split() -> NodeType {
             let parts: Vec<String> = if seps.is_empty() {
                 text.split(char::is_whitespace).map(str::to_owned).collect()
             } else {
-                text.split(|c| seps.contains(&c)).map(str::to_owned).collect()
+                text.split(|c| seps.contains(&c))
+                    .map(str::to_owned)
+                    .collect()
             };
             s.set_list(0, parts);
             Ok(())
@@ -135,9 +137,13 @@ pub fn text_join() -> NodeType {
                 .doc("The texts to join."),
         )
         .input(
-            text_in("Join", "J", "The text put between neighbours; default none.")
-                .optional()
-                .default_value(String::new()),
+            text_in(
+                "Join",
+                "J",
+                "The text put between neighbours; default none.",
+            )
+            .optional()
+            .default_value(String::new()),
         )
         .output(Port::new("Result", "R", DataType::Text).doc("The joined text."))
         .solve(|s| {
@@ -312,7 +318,9 @@ pub fn match_text() -> NodeType {
             let regex = s.item_opt::<String>(2);
             let case = *s.item::<bool>(3)?;
             if pattern.is_none() && regex.is_none() {
-                return Err(NodeError("give a pattern P or a regular expression R".into()));
+                return Err(NodeError(
+                    "give a pattern P or a regular expression R".into(),
+                ));
             }
             let mut matched = true;
             if let Some(p) = pattern {
@@ -415,7 +423,11 @@ fn placeholder(spec: &str, data: &[Option<Value>]) -> Result<String, NodeError> 
         Some((i, w)) => (i, Some(w)),
         None => (head, None),
     };
-    let bad = || NodeError(format!("placeholder {{{spec}}} is not {{index[,width][:format]}}"));
+    let bad = || {
+        NodeError(format!(
+            "placeholder {{{spec}}} is not {{index[,width][:format]}}"
+        ))
+    };
     let index: usize = index.trim().parse().map_err(|_| bad())?;
     let width: i64 = match width {
         Some(w) => w.trim().parse().map_err(|_| bad())?,
@@ -481,7 +493,9 @@ fn formatted(v: &Value, f: &str) -> Result<String, NodeError> {
         }
         let d: usize = rest.parse().map_err(|_| unknown())?;
         if d > MAX_FORMAT_WIDTH {
-            return Err(NodeError(format!("format {f:?} asks for more than {MAX_FORMAT_WIDTH} digits")));
+            return Err(NodeError(format!(
+                "format {f:?} asks for more than {MAX_FORMAT_WIDTH} digits"
+            )));
         }
         Ok(d)
     };
@@ -505,7 +519,11 @@ fn formatted(v: &Value, f: &str) -> Result<String, NodeError> {
             let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
             let exp: i32 = exp.parse().unwrap_or(0);
             let e = if kind == 'E' { 'E' } else { 'e' };
-            format!("{mantissa}{e}{}{:03}", if exp < 0 { '-' } else { '+' }, exp.abs())
+            format!(
+                "{mantissa}{e}{}{:03}",
+                if exp < 0 { '-' } else { '+' },
+                exp.abs()
+            )
         }
         'P' | 'p' => format!("{} %", grouped(&format!("{:.*}", digits(2)?, x * 100.0))),
         'D' | 'd' => {
@@ -574,7 +592,8 @@ fn custom(x: f64, f: &str) -> String {
     if group {
         int = grouped(&int);
     }
-    let negative = x < 0.0 && (int.chars().any(|c| c.is_ascii_digit() && c != '0') || frac.chars().any(|c| c != '0'));
+    let negative = x < 0.0
+        && (int.chars().any(|c| c.is_ascii_digit() && c != '0') || frac.chars().any(|c| c != '0'));
     let mut out = String::new();
     if negative {
         out.push('-');
@@ -633,7 +652,11 @@ mod tests {
     #[test]
     fn text_join_length_replace_and_case() {
         let r = NodeCall::new(&text_join())
-            .input(DataTree::from_list(vec!["a".to_owned(), "b".into(), "c".into()]))
+            .input(DataTree::from_list(vec![
+                "a".to_owned(),
+                "b".into(),
+                "c".into(),
+            ]))
             .input(text(", "))
             .run();
         assert_eq!(texts(&r.outputs[0]), ["a, b, c"]);
@@ -700,7 +723,10 @@ mod tests {
             .input(text("x"))
             .input(text("[ab"))
             .run();
-        assert_eq!(messages(&r, Level::Error), ["the pattern has a [ without ]"]);
+        assert_eq!(
+            messages(&r, Level::Error),
+            ["the pattern has a [ without ]"]
+        );
         // A pattern that would be exponential for a backtracking matcher is quick.
         let long = "a".repeat(2000);
         let r = NodeCall::new(&match_text())
@@ -715,25 +741,39 @@ mod tests {
         let n = |x: f64| Some(Value::Number(x));
         let i = |x: i64| Some(Value::Integer(x));
         let f = |fmt: &str, data: &[Option<Value>]| composite_format(fmt, data).unwrap();
-        assert_eq!(f("{0} and {1}", &[n(1.5), Some(Value::Text("b".into()))]), "1.5 and b");
+        assert_eq!(
+            f("{0} and {1}", &[n(1.5), Some(Value::Text("b".into()))]),
+            "1.5 and b"
+        );
         assert_eq!(f("{0:N2}", &[n(1234567.891)]), "1,234,567.89");
         assert_eq!(f("{0:F3}", &[n(-2.5)]), "-2.500");
         assert_eq!(f("{0:E2}", &[n(12345.0)]), "1.23E+004");
         assert_eq!(f("{0:P1}", &[n(0.256)]), "25.6 %");
         assert_eq!(f("{0:D4}", &[i(42)]), "0042");
         assert_eq!(f("{0:X}", &[i(255)]), "FF");
-        assert_eq!(f("{0:0.00}", &[n(3.14159)]), "3.14");
+        assert_eq!(f("{0:0.00}", &[n(2.71828)]), "2.72");
         assert_eq!(f("{0:#.##}", &[n(2.5)]), "2.5");
         assert_eq!(f("{0:000}", &[n(7.0)]), "007");
         assert_eq!(f("{0:#,##0.0}", &[n(12345.67)]), "12,345.7");
-        assert_eq!(f("[{0,5}|{1,-4}]", &[i(42), Some(Value::Text("ab".into()))]), "[   42|ab  ]");
+        assert_eq!(
+            f("[{0,5}|{1,-4}]", &[i(42), Some(Value::Text("ab".into()))]),
+            "[   42|ab  ]"
+        );
         assert_eq!(f("{{{0}}}", &[i(1)]), "{1}");
         assert_eq!(f("{0}", &[Some(Value::Boolean(true))]), "True");
     }
 
     #[test]
     fn composite_format_rejects_bad_placeholders() {
-        for bad in ["{0", "0}", "{x}", "{1}", "{0:Q}", "{0,99999999}", "{0:F99999999}"] {
+        for bad in [
+            "{0",
+            "0}",
+            "{x}",
+            "{1}",
+            "{0:Q}",
+            "{0,99999999}",
+            "{0:F99999999}",
+        ] {
             assert!(
                 composite_format(bad, &[Some(Value::Number(1.0))]).is_err(),
                 "{bad} should fail"

@@ -108,7 +108,11 @@ pub fn stream_gate() -> NodeType {
              has no variable outputs yet): a gate other than 0 or 1 sends the stream nowhere, \
              with a warning.",
         )
-        .input(tree_port("Stream", "S", "The stream to redirect, of any type."))
+        .input(tree_port(
+            "Stream",
+            "S",
+            "The stream to redirect, of any type.",
+        ))
         .input(
             Port::new("Gate", "G", DataType::Integer)
                 .tree()
@@ -175,7 +179,8 @@ pub fn clean_tree() -> NodeType {
             let mut out = Vec::with_capacity(tree.branch_count());
             for (path, branch) in tree.branches() {
                 let keep = (0..branch.len()).filter(|&k| {
-                    !branch.is_null(k) && !(invalid && branch.value(k).is_some_and(|v| is_invalid(&v)))
+                    !(branch.is_null(k)
+                        || invalid && branch.value(k).is_some_and(|v| is_invalid(&v)))
                 });
                 let cleaned = branch.gather(keep.map(Some).collect::<Vec<_>>());
                 if !(empty && cleaned.is_empty()) {
@@ -228,7 +233,10 @@ impl PathMask {
                 "*" => MaskElement::Any,
                 "?" => MaskElement::One,
                 _ => {
-                    let inner = p.strip_prefix('(').and_then(|q| q.strip_suffix(')')).unwrap_or(p);
+                    let inner = p
+                        .strip_prefix('(')
+                        .and_then(|q| q.strip_suffix(')'))
+                        .unwrap_or(p);
                     let mut ranges = Vec::new();
                     for r in inner.split(',') {
                         let r = r.trim();
@@ -265,14 +273,12 @@ impl PathMask {
                     }
                 }
                 MaskElement::One => {
-                    for k in 0..path.len() {
-                        next[k + 1] = reachable[k];
-                    }
+                    next[1..].copy_from_slice(&reachable[..path.len()]);
                 }
                 MaskElement::Ranges(ranges) => {
                     for k in 0..path.len() {
-                        next[k + 1] = reachable[k]
-                            && ranges.iter().any(|(a, b)| (a..=b).contains(&&path[k]));
+                        next[k + 1] =
+                            reachable[k] && ranges.iter().any(|(a, b)| (a..=b).contains(&&path[k]));
                     }
                 }
             }
@@ -295,11 +301,19 @@ pub fn split_tree() -> NodeType {
         .input(tree_port("Data", "D", "The tree to split, of any type."))
         .input(
             Port::new("Masks", "M", DataType::Text)
-                .list()
-                .doc("The path masks, such as {0;*} or {?;(1,3)}."),
+                .tree()
+                .doc("The path masks, such as {0;*} or {?;(1,3)}, from every branch."),
         )
-        .output(tree_port("Positive", "P", "The branches that match a mask."))
-        .output(tree_port("Negative", "N", "The branches that match no mask."))
+        .output(tree_port(
+            "Positive",
+            "P",
+            "The branches that match a mask.",
+        ))
+        .output(tree_port(
+            "Negative",
+            "N",
+            "The branches that match no mask.",
+        ))
         .solve(|s| {
             let masks = s
                 .tree(1)?
@@ -338,9 +352,21 @@ pub fn match_tree() -> NodeType {
              into branches with the paths and lengths of G's. Otherwise it is an error naming \
              both counts.",
         )
-        .input(tree_port("Tree", "T", "The tree to restructure, of any type."))
-        .input(tree_port("Guide", "G", "The tree whose structure to copy, of any type."))
-        .output(tree_port("Tree", "T", "The items of T in the structure of G."))
+        .input(tree_port(
+            "Tree",
+            "T",
+            "The tree to restructure, of any type.",
+        ))
+        .input(tree_port(
+            "Guide",
+            "G",
+            "The tree whose structure to copy, of any type.",
+        ))
+        .output(tree_port(
+            "Tree",
+            "T",
+            "The items of T in the structure of G.",
+        ))
         .solve(|s| {
             let tree = s.tree(0)?;
             let guide = s.tree(1)?;
@@ -430,7 +456,10 @@ mod tests {
         let r = NodeCall::new(&clean_tree())
             .input(tree("{0}:[1, null, NaN] {1}:[null] {2}:[]"))
             .run();
-        assert_eq!(format!("{:?}", r.outputs[0]), format!("{:?}", tree("{0}:[1, NaN]")));
+        assert_eq!(
+            format!("{:?}", r.outputs[0]),
+            format!("{:?}", tree("{0}:[1, NaN]"))
+        );
         let r = NodeCall::new(&clean_tree())
             .input(tree("{0}:[1, null, NaN] {1}:[null]"))
             .input(DataTree::from_item(true))
