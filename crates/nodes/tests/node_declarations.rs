@@ -176,6 +176,11 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
                 "params.brep",
                 "params.box",
                 "params.geometry",
+                // The curve-shaped parameters, checked with the Params shapes.
+                "params.line",
+                "params.circle",
+                "params.arc",
+                "params.rectangle",
             ]
             .contains(&t.id.as_str())
         })
