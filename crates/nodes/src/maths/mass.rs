@@ -288,11 +288,11 @@ mod tests {
         let errors = messages(&r, Level::Error);
         assert_eq!(errors.len(), 1);
         assert!(errors[0].contains("item 1 of input I"), "{errors:?}");
-        // A point plus a point is fine by the Addition rules, a point times a point is not.
+        // A domain is no operand.
         let r = NodeCall::new(&mass_multiplication())
             .input(generic(vec![
-                Some(Value::Point(Point3::ORIGIN)),
-                Some(Value::Point(Point3::ORIGIN)),
+                Some(Value::Number(2.0)),
+                Some(Value::Domain(locus_kernel::Interval::UNIT)),
             ]))
             .run();
         assert_eq!(messages(&r, Level::Error).len(), 1);
