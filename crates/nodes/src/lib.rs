@@ -14,6 +14,8 @@
 //! - Surface ([`params::surface`]): Surface \[Srf\].
 //! - Box, B-rep, any geometry, transforms ([`params::brep`]): Box, Brep, Geometry \[Geo\]
 //!   (Params › Geometry), Transform (Params › Primitive).
+//! - Data, Relay, Line, Circle, Arc, Rectangle \[Rec\] ([`params::shapes`]); Graph Mapper
+//!   \[Graph\] (Params › Input, [`params::graph_mapper`]).
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition
@@ -24,6 +26,10 @@
 //!   Remap Numbers \[ReMap\].
 //! - Script ([`maths::script`]): Expression, Evaluate \[Eval\]; the formula language is
 //!   [`expression`].
+//! - Lists and integers ([`maths::mass`]): Mass Addition \[MA\], Mass Multiplication \[MM\],
+//!   Integer Division \[A\\B\]; Util and Trig ([`maths::util`]): Average \[Avr\], Maximum
+//!   \[Max\], Minimum \[Min\], Round, Radians \[Rad\], Degrees \[Deg\], Bounds \[Bnd\]
+//!   (Domain).
 //!
 //! **Sets** ([`sets`])
 //! - List ([`sets::list`]): List Item \[Item\], List Length \[Lng\], Reverse List \[Rev\],
@@ -37,6 +43,15 @@
 //!   Paths \[PShift\], Flip Matrix \[Flip\], Path Mapper \[PathMapper\], Merge, Entwine,
 //!   Explode Tree \[BANG!\], Tree Branch \[Branch\], Tree Item \[Item\], Tree Statistics
 //!   \[TStat\].
+//! - Editing ([`sets::list_edit`], [`sets::tree_edit`]): Sub List \[SubSet\], Insert Items
+//!   \[Ins\], Replace Items \[Replace\], Pick'n'Choose \[P'n'C\], Weave, Sift Pattern \[Sift\],
+//!   Cross Reference \[CrossRef\], Null Item \[Null\]; Stream Filter \[Filter\], Stream Gate
+//!   \[Gate\], Clean Tree \[Clean\], Split Tree \[Split\], Match Tree \[Match\].
+//! - Random ([`sets::random`]): Random, Jitter, Random Reduce \[Reduce\] (seeded with .NET's
+//!   System.Random, [`sets::random::DotNetRandom`]), Fibonacci \[Fib\].
+//! - Text ([`sets::text`]): Concatenate \[Concat\], Text Split \[Split\], Text Join \[Join\],
+//!   Text Length \[Len\], Replace Text \[Rep\], Text Case \[Case\], Match Text \[TMatch\],
+//!   Format.
 //!
 //! **Vector** ([`vector`])
 //! - Point ([`vector::point`], [`vector::pull`]): Construct Point \[Pt\], Deconstruct
@@ -57,7 +72,9 @@
 //!   through [`transform::apply::transform_value`].
 //!
 //! **Curve** ([`curve`])
-//! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc.
+//! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc; ([`curve::primitive_more`])
+//!   Line SDL, Circle CNR, Circle 3Pt, Arc 3Pt, Arc SED, Polygon, Rectangle, and Curve Middle
+//!   \[MidPt\] (Analysis).
 //! - Spline ([`curve::spline`]): PolyLine \[PLine\], Bezier Span \[BzSpan\], Nurbs Curve
 //!   \[Nurbs\], Nurbs Curve PWK \[NurbCrv\], Interpolate \[IntCrv\], Knot Vector \[Knots\].
 //! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,

@@ -176,6 +176,11 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
                 "params.brep",
                 "params.box",
                 "params.geometry",
+                // The curve-shaped parameters, checked with the Params shapes.
+                "params.line",
+                "params.circle",
+                "params.arc",
+                "params.rectangle",
             ]
             .contains(&t.id.as_str())
         })
@@ -226,7 +231,10 @@ fn maths_and_params_ids_are_registered() {
 #[test]
 fn sets_ids_are_registered() {
     use locus_nodes::maths::sequence;
-    use locus_nodes::sets::{list, list_match, list_split, sequence as cull, streams, tree};
+    use locus_nodes::sets::{
+        list, list_edit, list_match, list_split, random, sequence as cull, streams, text, tree,
+        tree_edit,
+    };
     let registry = registry();
     let ids = [
         list::LIST_ITEM,
@@ -260,6 +268,31 @@ fn sets_ids_are_registered() {
         streams::TREE_BRANCH,
         streams::TREE_ITEM,
         streams::TREE_STATISTICS,
+        list_edit::SUB_LIST,
+        list_edit::INSERT_ITEMS,
+        list_edit::REPLACE_ITEMS,
+        list_edit::PICK_N_CHOOSE,
+        list_edit::WEAVE,
+        list_edit::SIFT_PATTERN,
+        list_edit::CROSS_REFERENCE,
+        list_edit::NULL_ITEM,
+        tree_edit::STREAM_FILTER,
+        tree_edit::STREAM_GATE,
+        tree_edit::CLEAN_TREE,
+        tree_edit::SPLIT_TREE,
+        tree_edit::MATCH_TREE,
+        random::RANDOM,
+        random::JITTER,
+        random::RANDOM_REDUCE,
+        random::FIBONACCI,
+        text::CONCATENATE,
+        text::TEXT_SPLIT,
+        text::TEXT_JOIN,
+        text::TEXT_LENGTH,
+        text::REPLACE_TEXT,
+        text::TEXT_CASE,
+        text::MATCH_TEXT,
+        text::FORMAT,
     ];
     for id in ids {
         assert!(registry.get(id).is_some(), "{id} is not registered");

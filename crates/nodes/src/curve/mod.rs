@@ -14,6 +14,7 @@
 pub mod analysis;
 pub mod division;
 pub mod primitive;
+pub mod primitive_more;
 pub mod spline;
 pub mod util;
 
@@ -28,6 +29,7 @@ pub fn register(registry: &mut NodeRegistry) {
     analysis::register(registry);
     division::register(registry);
     util::register(registry);
+    primitive_more::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve

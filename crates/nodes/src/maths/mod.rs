@@ -8,9 +8,11 @@
 pub mod boolean;
 pub mod comparison;
 pub mod domain;
+pub mod mass;
 pub mod operators;
 pub mod script;
 pub mod sequence;
+pub mod util;
 
 use locus_runtime::{NodeRegistry, Solve};
 
@@ -24,6 +26,8 @@ pub fn register(registry: &mut NodeRegistry) {
     domain::register(registry);
     sequence::register(registry);
     script::register(registry);
+    mass::register(registry);
+    util::register(registry);
 }
 
 /// The warning for an invalid numeric result, `why` saying what produced it.

@@ -10,7 +10,10 @@ pub mod brep;
 pub mod curve;
 pub mod geometry;
 pub mod mesh;
+
+pub mod graph_mapper;
 pub mod primitive;
+pub mod shapes;
 pub mod surface;
 
 use locus_runtime::NodeRegistry;
@@ -23,4 +26,7 @@ pub fn register(registry: &mut NodeRegistry) {
     surface::register(registry);
     brep::register(registry);
     mesh::register(registry);
+
+    shapes::register(registry);
+    graph_mapper::register(registry);
 }

@@ -6,6 +6,12 @@
 //!   (Range and Series are in [`crate::maths::sequence`]).
 //! - Tree ([`tree`], [`streams`]): Graft, Flatten, Simplify, Trim, Prune, Shift Paths, Flip
 //!   Matrix, Path Mapper; Merge, Entwine, Explode Tree, Tree Branch, Tree Item, Tree Statistics.
+//! - Editing ([`list_edit`], [`tree_edit`]): Sub List, Insert Items, Replace Items,
+//!   Pick'n'Choose, Weave, Sift Pattern, Cross Reference, Null Item; Stream Filter, Stream Gate,
+//!   Clean Tree, Split Tree, Match Tree.
+//! - Random ([`random`]): Random, Jitter, Random Reduce, Fibonacci.
+//! - Text ([`text`]): Concatenate, Text Split, Text Join, Text Length, Replace Text, Text Case,
+//!   Match Text, Format.
 //!
 //! List nodes take generic data and keep it typed: items move between branches with
 //! [`Branch::gather`](locus_runtime::Branch::gather) and typed range copies, never one boxed
@@ -20,22 +26,30 @@
 //! is the path `{3}`).
 
 pub mod list;
+pub mod list_edit;
 pub mod list_match;
 pub mod list_split;
+pub mod random;
 pub mod sequence;
 pub mod streams;
+pub mod text;
 pub mod tree;
+pub mod tree_edit;
 
 use locus_runtime::{NodeError, NodeRegistry, TreePath};
 
 /// Registers every Sets node type.
 pub fn register(registry: &mut NodeRegistry) {
     list::register(registry);
+    list_edit::register(registry);
     list_split::register(registry);
     list_match::register(registry);
     sequence::register(registry);
     tree::register(registry);
     streams::register(registry);
+    random::register(registry);
+    text::register(registry);
+    tree_edit::register(registry);
 }
 
 /// Reads a path written `{0;1}` (or `0;1`), naming the port in the error.
