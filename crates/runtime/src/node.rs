@@ -245,10 +245,10 @@ pub struct NodeType {
     pub prepare: Option<PrepareFn>,
     /// The item function behind `solve`, when the type was declared with `lift1`/`lift2`/
     /// `lift3`: the runtime runs it as a loop over typed columns.
-    pub(crate) lift: Option<crate::lift::Lift>,
+    pub(crate) lift: Option<crate::evaluation::lift::Lift>,
     /// Loops over typed columns for data of concrete types on generic ports, tried in order
     /// before the solve function (`fast_path2`).
-    pub(crate) fast_paths: Vec<crate::lift::Lift>,
+    pub(crate) fast_paths: Vec<crate::evaluation::lift::Lift>,
 }
 
 impl fmt::Debug for NodeType {

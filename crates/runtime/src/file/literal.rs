@@ -44,7 +44,7 @@ use std::ops::Range;
 
 use locus_kernel::{Interval, Plane, Point3, Transform, Vector3};
 
-use crate::syntax::{self, Kind, Node};
+use crate::file::syntax::{self, Kind, Node};
 use crate::{Branch, DataTree, DataType, Literal, TreePath, Value};
 
 /// How far from unit length and from perpendicular the written axes of a plane may be for the
@@ -339,7 +339,7 @@ pub(crate) fn parse_item(node: &Node, data_type: DataType) -> Result<Option<Valu
             Value::Transform(Transform::from_rows(rows))
         }
         DataType::Generic => return infer_item(node),
-        other => match crate::literal_geometry::parse_geometry(node, other) {
+        other => match crate::file::literal_geometry::parse_geometry(node, other) {
             Some(value) => value?,
             None => {
                 return error(
@@ -360,7 +360,7 @@ fn infer_item(node: &Node) -> Result<Option<Value>, LiteralError> {
         Kind::Bool(_) => DataType::Boolean,
         Kind::Str(_) => DataType::Text,
         Kind::Ident(i) if plane_by_name(i).is_some() => DataType::Plane,
-        Kind::Struct(None, _) => match crate::literal_geometry::struct_type(node) {
+        Kind::Struct(None, _) => match crate::file::literal_geometry::struct_type(node) {
             Some(t) => t,
             None => {
                 return error(
@@ -558,7 +558,7 @@ pub(crate) fn item_node(value: &Value, in_generic: bool) -> Result<Node, Literal
         Value::Domain(d) => numbers_node([d.t0, d.t1]),
         Value::Plane(p) => plane_node(p),
         Value::Transform(t) => Node::new(Kind::Tuple(None, t.to_rows().map(numbers_node).to_vec())),
-        other => match crate::literal_geometry::geometry_node(other) {
+        other => match crate::file::literal_geometry::geometry_node(other) {
             Some(node) => node?,
             None => {
                 return Err(LiteralError {

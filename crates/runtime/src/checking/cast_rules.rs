@@ -5,7 +5,7 @@
 
 use locus_kernel::{Interval, Plane, Point3};
 
-use crate::value_text::parse_number;
+use crate::file::value_text::parse_number;
 
 /// `2^63` as an `f64`: the first value past the largest `i64`.
 const I64_END: f64 = 9_223_372_036_854_775_808.0;

@@ -24,7 +24,7 @@
 
 use rayon::prelude::*;
 
-use crate::solve::{Cursor, OutputSink};
+use crate::evaluation::solve::{Cursor, OutputSink};
 use crate::{
     Access, Branch, DataTree, Level, Matching, Message, NodeId, NodeType, Port, Prepared, Solve,
     TreePath, Value,
@@ -150,7 +150,7 @@ fn run_lifted(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> Option<N
 /// Runs one lifted loop (the node's own or a fast path) when the ports and the data fit it.
 fn run_lift(
     run: &NodeRun<'_>,
-    lift: &crate::lift::Lift,
+    lift: &crate::evaluation::lift::Lift,
     data: &[&DataTree],
     parallel: bool,
 ) -> Option<NodeOutput> {
@@ -203,7 +203,8 @@ fn run_lift(
     let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
         let started = std::time::Instant::now();
         let first = one(&iterations[0]);
-        let spread = crate::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
+        let spread =
+            crate::evaluation::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
         let rest = &iterations[1..];
         let mut results = Vec::with_capacity(iterations.len());
         results.push(first);
@@ -220,7 +221,7 @@ fn run_lift(
     if results.iter().any(|(_, errors)| {
         errors
             .iter()
-            .any(|(_, text)| text == crate::lift::FALL_BACK)
+            .any(|(_, text)| text == crate::evaluation::lift::FALL_BACK)
     }) {
         return None;
     }

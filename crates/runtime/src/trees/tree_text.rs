@@ -3,7 +3,7 @@
 //!
 //! Each branch is its path, a colon and its items in square brackets; branches are separated by
 //! white space and printed in path order. Items are written per type: numbers as
-//! [`format_number`](crate::value_text::format_number) prints them (`0.5`, `1E+15`, `NaN`),
+//! [`format_number`](crate::file::value_text::format_number) prints them (`0.5`, `1E+15`, `NaN`),
 //! integers in decimal, booleans `true`/`false`, text in double quotes with `\"`, `\\`, `\n`,
 //! `\r`, `\t` and `\u{..}` escapes, points and vectors `{1, 2, 3}`, domains `0 To 1`, and `null`
 //! for a null item. An empty branch is `{0}:[]` and an empty tree is the empty string. The
@@ -14,7 +14,9 @@ use std::fmt;
 
 use locus_kernel::{Interval, Point3, Vector3};
 
-use crate::value_text::{format_plane, format_transform, parse_number, write_number, write_quoted};
+use crate::file::value_text::{
+    format_plane, format_transform, parse_number, write_number, write_quoted,
+};
 use crate::{Branch, DataTree, DataType, TreePath, Value};
 
 /// Why a tree could not be read from text: the column (in characters, from 1) and the problem.
@@ -97,7 +99,7 @@ fn write_item(out: &mut String, value: &Value) {
         }
         Value::Plane(p) => out.push_str(&format_plane(p)),
         Value::Transform(t) => out.push_str(&format_transform(t)),
-        other => write_quoted(out, &crate::value_text::format_value(other)),
+        other => write_quoted(out, &crate::file::value_text::format_value(other)),
     }
 }
 

@@ -22,10 +22,10 @@ use locus_kernel::{
     OrientedBox, Point3, Polyline,
 };
 
-use crate::literal::{
+use crate::file::literal::{
     error, mismatch, number, number_node, numbers, numbers_node, plane, plane_node,
 };
-use crate::syntax::{Field, Kind, Node};
+use crate::file::syntax::{Field, Kind, Node};
 use crate::{DataType, LiteralError, Shared, Value};
 
 /// The fields of a struct literal, looked up by name; every field must be used.

@@ -13,10 +13,10 @@ use std::sync::Arc;
 
 use petgraph::graph::{DiGraph, NodeIndex};
 
-use crate::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
-use crate::format::{Document, SourceMap};
-use crate::literal::{LiteralError, tree_from_node, value_from_node};
-use crate::syntax::{self, Node};
+use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+use crate::file::format::{Document, SourceMap};
+use crate::file::literal::{LiteralError, tree_from_node, value_from_node};
+use crate::file::syntax::{self, Node};
 use crate::{
     DataTree, DataType, Graph, Literal, Modifier, NodeRegistry, NodeType, Plan, PlanInput,
     PlanNode, Port, PortRef, Value, can_cast,

@@ -20,7 +20,7 @@
 use std::collections::BTreeMap;
 use std::fmt;
 
-use crate::path_mask::{CONSTANTS, Expr, parse_source, parse_target};
+use crate::trees::path_mask::{CONSTANTS, Expr, parse_source, parse_target};
 use crate::{Branch, DataTree, TreePath};
 
 /// How far past the number of items in the source tree a target item index may reach, so that
@@ -194,7 +194,7 @@ impl PathMapper {
             }
         }
 
-        let data_type = crate::tree_ops::storage_type(tree);
+        let data_type = crate::trees::tree_ops::storage_type(tree);
         let branches = targets.into_iter().map(|(path, slots)| {
             let mut out = Branch::new(data_type);
             for slot in slots {

@@ -8,8 +8,8 @@
 
 use std::ops::Range;
 
-use crate::diagnostic::{Diagnostic, DiagnosticKind, Location};
-use crate::syntax::{self, Field, Kind, LineIndex, Node};
+use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location};
+use crate::file::syntax::{self, Field, Kind, LineIndex, Node};
 use crate::{
     FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Matching, Modifier, NodeId,
     PortRef, Wire,

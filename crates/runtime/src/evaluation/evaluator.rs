@@ -12,8 +12,9 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use crate::iterate::{NodeOutput, NodeRun, run_node};
-use crate::{DataTree, Level, Message, NodeError, NodeId, Plan, Prepared, collect};
+use crate::evaluation::collect;
+use crate::evaluation::iterate::{NodeOutput, NodeRun, run_node};
+use crate::{DataTree, Level, Message, NodeError, NodeId, Plan, Prepared};
 
 /// Why a host request could not be carried out.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

@@ -21,15 +21,15 @@ use locus_kernel::{
     Vector3,
 };
 
-use crate::cast_geometry::{
+use crate::checking::cast_geometry::{
     arc_to_box, brep_to_box, brep_to_surface, circle_plane, circle_to_box, curve_to_arc,
     curve_to_box, curve_to_circle, curve_to_line, line_to_box, point_to_box, surface_to_box,
 };
-use crate::cast_rules::{
+use crate::checking::cast_rules::{
     number_to_boolean, number_to_domain, number_to_integer, parse_xyz, point_to_plane,
     text_to_boolean, text_to_domain, text_to_integer,
 };
-use crate::value_text::{
+use crate::file::value_text::{
     format_boolean, format_domain, format_number, format_plane, format_point, format_transform,
     format_value, format_vector, parse_number, write_quoted,
 };

@@ -1,0 +1,7 @@
+//! Checking a graph into a plan: the checker, its diagnostics, and the casting table.
+
+pub(crate) mod cast;
+pub(crate) mod cast_geometry;
+pub(crate) mod cast_rules;
+pub(crate) mod check;
+pub(crate) mod diagnostic;
