@@ -14,6 +14,7 @@ use std::sync::Arc;
 use petgraph::graph::{DiGraph, NodeIndex};
 
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+use crate::file::expected::ExpectedTree;
 use crate::file::format::{Document, SourceMap};
 use crate::file::literal::{LiteralError, tree_from_node, value_from_node};
 use crate::file::syntax::{self, Node};
@@ -153,6 +154,7 @@ impl<'a> Checker<'a> {
         let outputs = self.named_outputs();
         self.required_inputs();
         self.expected(&outputs);
+        self.expected_messages();
         self.cycles();
         let mut diagnostics = std::mem::take(&mut self.diagnostics);
         diagnostics.sort_by_key(|d| d.location.map_or(usize::MAX, |l| l.offset));
@@ -758,8 +760,9 @@ impl<'a> Checker<'a> {
                 continue;
             };
             let data_type = r.node_type.outputs[k].data_type;
+            // Expected values are literals whose B-rep items may be summaries.
             if let Err((message, at)) = self.parse_literal(literal, spans.map(|s| &s[1]), |n| {
-                tree_from_node(n, data_type)
+                ExpectedTree::from_node(n, data_type)
             }) {
                 self.error(
                     DiagnosticKind::BadExpected {
@@ -767,6 +770,21 @@ impl<'a> Checker<'a> {
                         message,
                     },
                     at.or(spans.map(|s| s[1].start)),
+                );
+            }
+        }
+    }
+
+    /// Expected messages must name nodes of the graph.
+    fn expected_messages(&mut self) {
+        for (e, m) in self.graph.expected_messages.iter().enumerate() {
+            if !self.index.contains_key(m.node.0.as_str()) {
+                let at = self.map().and_then(|map| map.expected_messages.get(e));
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!("expected message for unknown node \"{}\"", m.node),
+                    },
+                    at.map(|s| s.start),
                 );
             }
         }
