@@ -2,6 +2,7 @@
 //! writer, literal values (geometry too) read against a port's type, and the text form of values.
 
 pub(crate) mod bless;
+pub(crate) mod canonical;
 pub(crate) mod expected;
 pub(crate) mod format;
 pub(crate) mod literal;

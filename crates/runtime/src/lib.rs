@@ -175,6 +175,7 @@ pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};
 pub use crate::evaluation::solve::{ListView, Solve};
 pub use crate::file::bless::BlessOutput;
+pub use crate::file::canonical::CommentInside;
 pub use crate::file::expected::{
     BREP_SUMMARY_TOLERANCE, BrepSummary, ExpectedItem, ExpectedTree, expectation_literal,
 };
@@ -189,7 +190,7 @@ pub use crate::host::{LoadError, load_file};
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
-    VariableInputs,
+    ValueConstraint, VariableInputs,
 };
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;

@@ -13,6 +13,7 @@ use std::sync::Arc;
 
 use petgraph::graph::{DiGraph, NodeIndex};
 
+use crate::checking::before_run::check_before_run;
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
 use crate::file::expected::ExpectedTree;
 use crate::file::format::{Document, SourceMap};
@@ -161,8 +162,17 @@ impl<'a> Checker<'a> {
         if diagnostics.iter().any(Diagnostic::is_error) {
             return Err(diagnostics);
         }
+        let (graph, doc) = (self.graph, self.doc);
+        let plan = self.plan(outputs);
+        // What can be known before running: prepare steps and literal values' constraints.
+        let before_run = check_before_run(&plan, graph, doc);
+        if !before_run.is_empty() {
+            diagnostics.extend(before_run);
+            diagnostics.sort_by_key(|d| d.location.map_or(usize::MAX, |l| l.offset));
+            return Err(diagnostics);
+        }
         Ok(Checked {
-            plan: self.plan(outputs),
+            plan,
             warnings: diagnostics,
         })
     }

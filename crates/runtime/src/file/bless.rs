@@ -10,6 +10,7 @@
 
 use std::ops::Range;
 
+use crate::file::canonical::comments;
 use crate::file::expected::{ExpectedTree, expectation_node};
 use crate::file::format::{Document, expected_messages_node};
 use crate::file::literal::LiteralError;
@@ -201,61 +202,6 @@ fn line_indent(src: &str, offset: usize) -> &str {
     let start = src[..offset].rfind('\n').map_or(0, |i| i + 1);
     let line = &src[start..];
     &line[..line.len() - line.trim_start_matches([' ', '\t']).len()]
-}
-
-/// The comments in RON text, in order (line comments without their newline).
-fn comments(text: &str) -> Vec<&str> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'"' => {
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'"' {
-                    i += if bytes[i] == b'\\' { 2 } else { 1 };
-                }
-                i += 1;
-            }
-            b'r' if matches!(bytes.get(i + 1), Some(b'#' | b'"'))
-                && (i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_')) =>
-            {
-                let hashes = bytes[i + 1..].iter().take_while(|&&b| b == b'#').count();
-                let close = format!("\"{}", "#".repeat(hashes));
-                let open = i + 1 + hashes + 1;
-                i = text
-                    .get(open..)
-                    .and_then(|rest| rest.find(&close))
-                    .map_or(bytes.len(), |at| open + at + close.len());
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                let end = text[i..].find('\n').map_or(bytes.len(), |at| i + at);
-                out.push(text[i..end].trim_end_matches('\r'));
-                i = end;
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                let start = i;
-                let mut depth = 0usize;
-                while i < bytes.len() {
-                    if bytes[i..].starts_with(b"/*") {
-                        depth += 1;
-                        i += 2;
-                    } else if bytes[i..].starts_with(b"*/") {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
-                out.push(&text[start..i.min(bytes.len())]);
-            }
-            _ => i += 1,
-        }
-    }
-    out
 }
 
 /// The span to delete to remove an entry: the entry, its comma, and its line when nothing else
@@ -460,12 +406,5 @@ mod tests {
             "{out:?}"
         );
         assert!(Document::parse(&out).is_ok());
-    }
-
-    #[test]
-    fn comments_are_found_outside_strings_only() {
-        let text = r##"["a // b", r#"/* x */"#, /* c /* d */ */ 1 // e
-        ]"##;
-        assert_eq!(comments(text), ["/* c /* d */ */", "// e"]);
     }
 }
