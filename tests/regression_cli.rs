@@ -274,8 +274,8 @@ fn check_reports_what_it_can_know_before_running() {
         r#"(
     format: 1,
     nodes: [
-        (id: "e", type: "maths.expression", inputs: ["x"], settings: {"expression": "(x + 1"}),
-        (id: "m", type: "sets.path_mapper", settings: {"source": "{A;B", "target": "{B;A}"}),
+        (id: "e", type: "maths.expression", inputs: ["x"], values: {"x": 1}, settings: {"expression": "(x + 1"}),
+        (id: "m", type: "sets.path_mapper", values: {"D": [1]}, settings: {"source": "{A;B", "target": "{B;A}"}),
         (id: "c", type: "curve.circle", values: {"R": [2.0, -1.0]}),
         (id: "s", type: "surface.sphere", values: {"R": 0}),
         (id: "fine", type: "curve.circle", values: {"R": 1.5}),

@@ -277,7 +277,10 @@ fn brep_summary(node: &Node) -> Result<BrepSummary, LiteralError> {
     };
     let number = |v: &Node| -> Result<f64, LiteralError> {
         match &v.kind {
-            Kind::Number(n) => crate::parse_number(n)
+            Kind::Number(n) => match crate::parse_number(n) {
+                Some(x) => Ok(x),
+                None => error(v, format!("expected a number, found {n}")),
+            },
                 .ok_or(())
                 .or_else(|()| error(v, format!("expected a number, found {n}"))),
             _ => error(v, format!("expected a number, found {}", v.describe())),
