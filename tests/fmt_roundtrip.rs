@@ -4,8 +4,8 @@
 //! line endings too.
 
 use locus_runtime::{
-    Document, ExpectedMessage, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal,
-    Matching, Modifier, NodeId, PortRef, Wire,
+    Document, ExpectedMessage, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal, Matching,
+    Modifier, NodeId, PortRef, Wire,
 };
 use proptest::prelude::*;
 
@@ -50,7 +50,13 @@ fn node() -> impl Strategy<Value = GraphNode> {
         "[a-z]{1,6}\\.[a-z_]{1,8}",
         proptest::option::of(proptest::collection::vec("[a-zA-Z]{1,3}", 0..3)),
         proptest::collection::vec(("[A-Za-z]{1,3}", literal()), 0..3),
-        proptest::collection::vec(("[a-z]{1,6}", text().prop_map(|t| Literal::canonical(&format!("{t:?}")).expect("a RON string"))), 0..2),
+        proptest::collection::vec(
+            (
+                "[a-z]{1,6}",
+                text().prop_map(|t| Literal::canonical(&format!("{t:?}")).expect("a RON string")),
+            ),
+            0..2,
+        ),
         proptest::collection::vec(("[A-Za-z]{1,3}", modifiers), 0..2),
         proptest::sample::select(vec![Matching::Longest, Matching::Shortest, Matching::Cross]),
         any::<bool>(),
@@ -99,7 +105,10 @@ fn graph() -> impl Strategy<Value = Graph> {
                     name,
                     description,
                     nodes,
-                    wires: wires.into_iter().map(|(from, to)| Wire { from, to }).collect(),
+                    wires: wires
+                        .into_iter()
+                        .map(|(from, to)| Wire { from, to })
+                        .collect(),
                     inputs: inputs
                         .into_iter()
                         .map(|(name, target)| GraphInput { name, target })

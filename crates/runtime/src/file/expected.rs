@@ -281,8 +281,6 @@ fn brep_summary(node: &Node) -> Result<BrepSummary, LiteralError> {
                 Some(x) => Ok(x),
                 None => error(v, format!("expected a number, found {n}")),
             },
-                .ok_or(())
-                .or_else(|()| error(v, format!("expected a number, found {n}"))),
             _ => error(v, format!("expected a number, found {}", v.describe())),
         }
     };
