@@ -84,7 +84,10 @@ pub struct Port {
 /// A check of one item of a literal value, known before running: `Err` says why the item is
 /// not acceptable (`radius -1 is not positive`). Wired data is checked by the node as it runs.
 #[derive(Clone)]
-pub struct ValueConstraint(pub Arc<dyn Fn(&Value) -> Result<(), String> + Send + Sync>);
+pub struct ValueConstraint(pub Arc<ConstraintFn>);
+
+/// The function behind a [`ValueConstraint`].
+pub type ConstraintFn = dyn Fn(&Value) -> Result<(), String> + Send + Sync;
 
 impl ValueConstraint {
     /// Checks one item.
