@@ -27,10 +27,12 @@ macro_rules! out_str {
 
 mod catalog;
 mod export;
+mod fmt;
 mod graph_file;
 mod render;
 mod serve;
 mod test_graphs;
+mod write_file;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -140,12 +142,24 @@ enum Command {
     Test {
         /// Graph files or folders (searched for .ron files); default `graphs/`.
         paths: Vec<PathBuf>,
-        /// Write the current outputs into the graphs as their new expectations.
+        /// Write the current outputs into the graphs as their new expectations (refused for a
+        /// graph whose run reports an error it does not declare, unless --allow-errors).
         #[arg(long)]
         bless: bool,
+        /// With --bless: declare the errors the run reports as expected messages.
+        #[arg(long, requires = "bless")]
+        allow_errors: bool,
         /// Number of threads.
         #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
         threads: Option<u32>,
+    },
+    /// Rewrite graph files in canonical layout (the comments before the graph are kept).
+    Fmt {
+        /// Graph files or folders (searched for .ron files); default `graphs/`.
+        paths: Vec<PathBuf>,
+        /// Change nothing; exit with 4 if a file is not in canonical layout.
+        #[arg(long)]
+        check: bool,
     },
     /// List the node catalogue, optionally one category.
     Nodes {
@@ -243,8 +257,16 @@ fn main() -> ExitCode {
         Command::Test {
             paths,
             bless,
+            allow_errors,
             threads,
-        } => test_graphs::test(&registry, &paths, bless, threads.map(|n| n as usize)),
+        } => test_graphs::test(
+            &registry,
+            &paths,
+            bless,
+            allow_errors,
+            threads.map(|n| n as usize),
+        ),
+        Command::Fmt { paths, check } => fmt::fmt(&paths, check),
         Command::Nodes { category } => catalog::list(&registry, category.as_deref()),
         Command::Describe { node } => catalog::describe(&registry, &node),
         Command::Dot { graph } => graph_file::dot(&registry, &graph),

@@ -2,9 +2,13 @@
 
 use std::path::{Path, PathBuf};
 
-use locus_runtime::{COMPARE_TOLERANCE, Literal, NodeRegistry, compare_trees};
+use locus_runtime::{
+    BlessOutput, COMPARE_TOLERANCE, DataType, ExpectedMessage, ExpectedTree, Graph, Level, Message,
+    NodeRegistry, compare_expected,
+};
 
 use crate::graph_file::{evaluator, load};
+use crate::write_file::write_atomically;
 use crate::{EXIT_BAD_GRAPH, EXIT_TEST_FAILED};
 
 /// The graph files under `paths` (folders searched recursively), sorted.
@@ -46,7 +50,7 @@ fn collect(path: &Path, files: &mut Vec<PathBuf>) -> Result<(), String> {
 
 /// The outcome of testing one graph.
 pub(crate) enum Outcome {
-    /// Every expected output matched.
+    /// Every expected output and message matched.
     Pass,
     /// The graph has no expectations.
     Skip,
@@ -54,7 +58,34 @@ pub(crate) enum Outcome {
     Fail(Vec<String>),
 }
 
-/// Tests one graph file: its expected outputs against a fresh evaluation.
+/// The runtime errors that no expected message of the graph declares, and the expected
+/// messages that no runtime message matched.
+fn message_problems(graph: &Graph, messages: &[Message]) -> (Vec<Message>, Vec<String>) {
+    let undeclared = messages
+        .iter()
+        .filter(|m| m.level == Level::Error)
+        .filter(|m| !graph.expected_messages.iter().any(|e| e.matches(m)))
+        .cloned()
+        .collect();
+    let missing = graph
+        .expected_messages
+        .iter()
+        .filter(|e| !messages.iter().any(|m| e.matches(m)))
+        .map(|e| {
+            format!(
+                "expected {} on node \"{}\" matching \"{}\" was not reported",
+                e.level, e.node, e.text
+            )
+        })
+        .collect();
+    (undeclared, missing)
+}
+
+/// Tests one graph file: its expected outputs and messages against a fresh evaluation.
+///
+/// A graph fails when an output differs from its expected value, when a named output has no
+/// expected value, when its run reports an error that `expected_messages` does not declare, or
+/// when a declared message is not reported.
 pub(crate) fn test_graph(registry: &NodeRegistry, path: &Path, threads: Option<usize>) -> Outcome {
     let loaded = match load(registry, path) {
         Ok(l) => l,
@@ -63,8 +94,8 @@ pub(crate) fn test_graph(registry: &NodeRegistry, path: &Path, threads: Option<u
             return Outcome::Fail(vec!["the graph does not load or check".to_owned()]);
         }
     };
-    let expected = &loaded.document.graph().expected;
-    if expected.is_empty() {
+    let graph = loaded.document.graph();
+    if graph.expected.is_empty() && graph.expected_messages.is_empty() {
         return Outcome::Skip;
     }
     let mut ev = match evaluator(&loaded.checked, threads) {
@@ -74,13 +105,15 @@ pub(crate) fn test_graph(registry: &NodeRegistry, path: &Path, threads: Option<u
     ev.evaluate();
     let plan = &loaded.checked.plan;
     let mut problems = Vec::new();
-    for (name, literal) in expected {
-        let Some(&(_, node, output)) = plan.outputs.iter().find(|(n, _, _)| n == name) else {
-            problems.push(format!("{name}: no such output"));
+    for (name, node, output) in &plan.outputs {
+        let data_type = plan.nodes[*node].node_type.outputs[*output].data_type;
+        let Some((_, literal)) = graph.expected.iter().find(|(n, _)| n == name) else {
+            problems.push(format!(
+                "{name}: no expected value (the output is unchecked)"
+            ));
             continue;
         };
-        let data_type = plan.nodes[node].node_type.outputs[output].data_type;
-        let want = match literal.parse(data_type) {
+        let want = match ExpectedTree::parse(literal, data_type) {
             Ok(t) => t,
             Err(e) => {
                 problems.push(format!("{name}: the expected value does not read: {e}"));
@@ -88,10 +121,16 @@ pub(crate) fn test_graph(registry: &NodeRegistry, path: &Path, threads: Option<u
             }
         };
         let got = ev.output(name).cloned().unwrap_or_default();
-        for line in compare_trees(&got, &want, COMPARE_TOLERANCE, 10) {
+        for line in compare_expected(&got, &want, COMPARE_TOLERANCE, 10) {
             problems.push(format!("{name} {line}"));
         }
     }
+    let messages: Vec<Message> = ev.messages().cloned().collect();
+    let (undeclared, missing) = message_problems(graph, &messages);
+    for m in undeclared {
+        problems.push(format!("{m} (not declared in expected_messages)"));
+    }
+    problems.extend(missing);
     if problems.is_empty() {
         Outcome::Pass
     } else {
@@ -99,20 +138,75 @@ pub(crate) fn test_graph(registry: &NodeRegistry, path: &Path, threads: Option<u
     }
 }
 
-fn bless(registry: &NodeRegistry, path: &Path, threads: Option<usize>) -> Result<(), String> {
+/// What blessing did to a file.
+enum Blessed {
+    Written,
+    Unchanged,
+}
+
+fn bless(
+    registry: &NodeRegistry,
+    path: &Path,
+    threads: Option<usize>,
+    allow_errors: bool,
+) -> Result<Blessed, String> {
     let loaded = load(registry, path).map_err(|e| {
         e.report(path);
         "the graph does not load or check".to_owned()
     })?;
     let mut ev = evaluator(&loaded.checked, threads)?;
     ev.evaluate();
-    let mut expected = Vec::new();
-    for (name, tree) in ev.outputs() {
-        let literal = Literal::from_tree(tree).map_err(|e| format!("output {name}: {e}"))?;
-        expected.push((name.to_owned(), literal));
+    let graph = loaded.document.graph();
+    let messages: Vec<Message> = ev.messages().cloned().collect();
+    let (undeclared, _) = message_problems(graph, &messages);
+    if !undeclared.is_empty() && !allow_errors {
+        let list: Vec<String> = undeclared.iter().map(ToString::to_string).collect();
+        return Err(format!(
+            "not blessed: the run reports {} error{} not declared in expected_messages ({}); \
+             pass --allow-errors to bless them as expected",
+            list.len(),
+            if list.len() == 1 { "" } else { "s" },
+            list.join("; ")
+        ));
     }
-    let text = loaded.document.with_expected(&expected);
-    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+    let mut new_messages: Vec<ExpectedMessage> = Vec::new();
+    for m in &undeclared {
+        let e = ExpectedMessage {
+            node: m.node.clone(),
+            level: m.level,
+            text: m.text.clone(),
+        };
+        if !new_messages.contains(&e) {
+            new_messages.push(e);
+        }
+    }
+    let plan = &loaded.checked.plan;
+    let outputs: Vec<BlessOutput> = ev
+        .outputs()
+        .map(|(name, tree)| {
+            let data_type = plan
+                .outputs
+                .iter()
+                .find(|(n, _, _)| n == name)
+                .map_or(DataType::Generic, |&(_, node, output)| {
+                    plan.nodes[node].node_type.outputs[output].data_type
+                });
+            BlessOutput {
+                name,
+                data_type,
+                tree,
+            }
+        })
+        .collect();
+    let text = loaded
+        .document
+        .bless(&outputs, &new_messages)
+        .map_err(|e| e.to_string())?;
+    if text == loaded.document.source() {
+        return Ok(Blessed::Unchanged);
+    }
+    write_atomically(path, &text)?;
+    Ok(Blessed::Written)
 }
 
 /// `locus test`.
@@ -120,6 +214,7 @@ pub(crate) fn test(
     registry: &NodeRegistry,
     paths: &[PathBuf],
     do_bless: bool,
+    allow_errors: bool,
     threads: Option<usize>,
 ) -> u8 {
     let files = match graph_files(paths) {
@@ -132,9 +227,13 @@ pub(crate) fn test(
     let (mut passed, mut failed, mut skipped) = (0, 0, 0);
     for file in &files {
         if do_bless {
-            match bless(registry, file, threads) {
-                Ok(()) => {
+            match bless(registry, file, threads, allow_errors) {
+                Ok(Blessed::Written) => {
                     out!("blessed {}", file.display());
+                    passed += 1;
+                }
+                Ok(Blessed::Unchanged) => {
+                    out!("ok      {} (unchanged)", file.display());
                     passed += 1;
                 }
                 Err(e) => {

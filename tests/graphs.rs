@@ -1,10 +1,14 @@
 //! Every graph under `graphs/` checks without warnings, carries an expected value for every named
-//! output (but B-reps, which have no literal form) and meets it, and evaluates to identical outputs and messages with one thread and with
-//! all threads.
+//! output (B-reps by their summary: counts, area, volume, bounding box) and meets it, reports no
+//! error it does not declare, and evaluates to identical outputs and messages with one thread and
+//! with all threads.
 
 use std::path::{Path, PathBuf};
 
-use locus_runtime::{COMPARE_TOLERANCE, Document, Evaluator, NodeRegistry, compare_trees};
+use locus_runtime::{
+    COMPARE_TOLERANCE, Document, Evaluator, ExpectedTree, Level, NodeRegistry, compare_expected,
+    compare_trees,
+};
 
 fn registry() -> NodeRegistry {
     let mut r = NodeRegistry::new();
@@ -86,19 +90,25 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
             failures.push(format!("{name}: one thread and all threads differ"));
         }
         let plan = &document.check(&registry).expect("checked above").plan;
-        // Every named output has an expected value, except B-reps, which have no literal form
-        // (a graph checks them through what is measured of them: areas, centroids, counts).
-        let expected = &document.graph().expected;
+        // Every named output has an expected value (B-reps by their summary), and every error
+        // the run reports is declared in expected_messages.
+        let graph = document.graph();
         for (output, _, _) in &plan.outputs {
-            let breps_only = serial.output(output).is_some_and(|tree| {
-                let mut items = tree.values().flatten().peekable();
-                items.peek().is_some() && items.all(|v| matches!(v, locus_runtime::Value::Brep(_)))
-            });
-            if !breps_only && !expected.iter().any(|(name, _)| name == output) {
+            if !graph.expected.iter().any(|(name, _)| name == output) {
                 failures.push(format!("{name}: output {output} has no expected value"));
             }
         }
-        for (output, literal) in &document.graph().expected {
+        for m in serial.messages() {
+            if m.level == Level::Error && !graph.expected_messages.iter().any(|e| e.matches(m)) {
+                failures.push(format!("{name}: undeclared error: {m}"));
+            }
+        }
+        for e in &graph.expected_messages {
+            if !serial.messages().any(|m| e.matches(m)) {
+                failures.push(format!("{name}: expected message not reported: {e:?}"));
+            }
+        }
+        for (output, literal) in &graph.expected {
             let Some(&(_, node, port)) = plan.outputs.iter().find(|(n, _, _)| n == output) else {
                 failures.push(format!(
                     "{name}: expected value for unknown output {output}"
@@ -106,7 +116,7 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
                 continue;
             };
             let data_type = plan.nodes[node].node_type.outputs[port].data_type;
-            let want = match literal.parse(data_type) {
+            let want = match ExpectedTree::parse(literal, data_type) {
                 Ok(t) => t,
                 Err(e) => {
                     failures.push(format!(
@@ -116,7 +126,7 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
                 }
             };
             let got = serial.output(output).cloned().unwrap_or_default();
-            for line in compare_trees(&got, &want, COMPARE_TOLERANCE, 5) {
+            for line in compare_expected(&got, &want, COMPARE_TOLERANCE, 5) {
                 failures.push(format!("{name}: {output} {line}"));
             }
         }

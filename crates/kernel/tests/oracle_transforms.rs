@@ -1,4 +1,4 @@
-//! Replays the `transforms` section of `shared/oracle/opennurbs-cases.json`: for every case,
+//! Replays the `transforms` section of `tests/data/oracle/opennurbs-cases.json`: for every case,
 //! builds the transform from its parameters with the kernel, then compares the 4×4 matrix and
 //! the images of the case's points with openNURBS's, to 1e-9 relative.
 //!

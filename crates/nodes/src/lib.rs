@@ -148,6 +148,7 @@
 //!   two 1M-number lists 130× faster (`cargo bench -p locus-nodes --bench large_lists --
 //!   "Addition|add two"`).
 
+mod constraints;
 pub mod curve;
 pub mod display;
 pub mod expression;

@@ -10,8 +10,6 @@
 //!
 //! Every failing case is named and all failures are reported together.
 
-use std::path::Path;
-
 use locus_kernel::{Curve, Point3, Vector3};
 use locus_nodes::curve::{analysis, spline};
 use locus_runtime::{DataTree, NodeCall, NodeCallResult, Shared, Value};
@@ -20,14 +18,7 @@ use serde_json::Value as Json;
 const REL: f64 = 1e-9;
 
 fn load(file: &str) -> Json {
-    let start = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = start
-        .ancestors()
-        .map(|d| d.join("shared").join("oracle"))
-        .find(|d| d.join(file).is_file())
-        .unwrap_or_else(|| panic!("no shared/oracle/{file} above {}", start.display()));
-    let text = std::fs::read_to_string(dir.join(file)).expect("readable oracle");
-    serde_json::from_str(&text).expect("valid JSON")
+    locus_test_data::load_oracle(file)
 }
 
 fn num(v: &Json) -> f64 {

@@ -1,5 +1,6 @@
 //! Checking a graph into a plan: the checker, its diagnostics, and the casting table.
 
+pub(crate) mod before_run;
 pub(crate) mod cast;
 pub(crate) mod cast_geometry;
 pub(crate) mod cast_mesh;

@@ -2,6 +2,7 @@
 
 use locus_kernel::{NurbsCurve, Plane, Point3, Vector3};
 
+use crate::file::expected::{BrepSummary, ExpectedItem, ExpectedTree};
 use crate::{DataTree, Value, format_value};
 
 /// The default relative tolerance of [`compare_trees`]: 1e-9, the agreement the kernel keeps
@@ -20,6 +21,31 @@ pub fn compare_trees(
     tolerance: f64,
     max_lines: usize,
 ) -> Vec<String> {
+    let expected = ExpectedTree {
+        branches: expected
+            .branches()
+            .iter()
+            .map(|(path, b)| {
+                (
+                    path.clone(),
+                    b.values().map(|v| v.map(ExpectedItem::Value)).collect(),
+                )
+            })
+            .collect(),
+    };
+    compare_expected(actual, &expected, tolerance, max_lines)
+}
+
+/// The differences between an actual tree and an expected one as `locus test` reads it
+/// ([`ExpectedTree`]: values, and B-reps by their [`BrepSummary`](crate::BrepSummary)), as
+/// [`compare_trees`] lists them; a B-rep's differences name the summary's fields
+/// (`{0}[2]: faces: expected 6, got 5`).
+pub fn compare_expected(
+    actual: &DataTree,
+    expected: &ExpectedTree,
+    tolerance: f64,
+    max_lines: usize,
+) -> Vec<String> {
     let mut out = Vec::new();
     let mut more = 0usize;
     let mut push = |line: String, out: &mut Vec<String>| {
@@ -30,7 +56,11 @@ pub fn compare_trees(
         }
     };
     let actual_paths: Vec<String> = actual.paths().map(ToString::to_string).collect();
-    let expected_paths: Vec<String> = expected.paths().map(ToString::to_string).collect();
+    let expected_paths: Vec<String> = expected
+        .branches
+        .iter()
+        .map(|(p, _)| p.to_string())
+        .collect();
     if actual_paths != expected_paths {
         push(
             format!(
@@ -42,7 +72,7 @@ pub fn compare_trees(
         );
         return out;
     }
-    for ((path, a), (_, e)) in actual.branches().iter().zip(expected.branches()) {
+    for ((path, a), (_, e)) in actual.branches().iter().zip(&expected.branches) {
         if a.len() != e.len() {
             push(
                 format!("{path}: expected {} items, got {}", e.len(), a.len()),
@@ -50,27 +80,39 @@ pub fn compare_trees(
             );
             continue;
         }
-        for (i, (av, ev)) in a.values().zip(e.values()).enumerate() {
-            let same = match (&av, &ev) {
-                (None, None) => true,
-                (Some(x), Some(y)) => values_agree(x, y, tolerance),
-                _ => false,
-            };
-            if !same {
-                let detail = match (&av, &ev) {
-                    (Some(x), Some(y)) => first_difference(x, y, tolerance)
+        for (i, (av, ev)) in a.values().zip(e).enumerate() {
+            match (&av, ev) {
+                (None, None) => {}
+                (Some(Value::Brep(b)), Some(ExpectedItem::Brep(want))) => {
+                    for d in BrepSummary::of(b).differences(want) {
+                        push(format!("{path}[{i}]: {d}"), &mut out);
+                    }
+                }
+                (Some(x), Some(ExpectedItem::Value(y))) if values_agree(x, y, tolerance) => {}
+                (Some(x), Some(ExpectedItem::Value(y))) => {
+                    let detail = first_difference(x, y, tolerance)
                         .map(|d| format!(" ({d})"))
-                        .unwrap_or_default(),
-                    _ => String::new(),
-                };
-                push(
-                    format!(
-                        "{path}[{i}]: expected {}, got {}{detail}",
-                        show(ev.as_ref()),
-                        show(av.as_ref())
-                    ),
-                    &mut out,
-                );
+                        .unwrap_or_default();
+                    push(
+                        format!(
+                            "{path}[{i}]: expected {}, got {}{detail}",
+                            show(Some(y)),
+                            show(Some(x))
+                        ),
+                        &mut out,
+                    );
+                }
+                (av, ev) => {
+                    let want = match ev {
+                        None => "null".to_owned(),
+                        Some(ExpectedItem::Value(v)) => show(Some(v)),
+                        Some(ExpectedItem::Brep(_)) => "a Brep".to_owned(),
+                    };
+                    push(
+                        format!("{path}[{i}]: expected {want}, got {}", show(av.as_ref())),
+                        &mut out,
+                    );
+                }
             }
         }
     }
@@ -97,6 +139,13 @@ fn show(v: Option<&Value>) -> String {
     match v {
         None => "null".to_owned(),
         Some(Value::Text(t)) => format!("{t:?}"),
+        Some(Value::Brep(b)) => {
+            let s = BrepSummary::of(b);
+            format!(
+                "Brep ({} faces, {} edges, {} vertices)",
+                s.faces, s.edges, s.vertices
+            )
+        }
         Some(v) => format!("{} {}", v.data_type(), format_value(v)),
     }
 }

@@ -4,7 +4,7 @@
 //! and values are literal texts that are only interpreted once the port's type is known.
 //! Checking (see `check`) turns a [`Graph`] into a list of diagnostics or a runnable plan.
 
-use crate::Matching;
+use crate::{Level, Matching, Message};
 
 /// The version of the graph file format written by this build.
 pub const FORMAT_VERSION: u32 = 1;
@@ -28,6 +28,45 @@ pub struct Graph {
     pub outputs: Vec<GraphOutput>,
     /// Expected output trees for regression tests (`locus test`), by output name.
     pub expected: Vec<(String, Literal)>,
+    /// Runtime messages a regression test expects (`locus test` fails a graph whose run
+    /// reports an error that none of these declares, and one whose run lacks one of these).
+    pub expected_messages: Vec<ExpectedMessage>,
+}
+
+/// A runtime message a graph declares as expected: the node, the level and a text pattern.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExpectedMessage {
+    /// The node that reports it.
+    pub node: NodeId,
+    /// Its level.
+    pub level: Level,
+    /// A pattern the message's text contains; `*` stands for any run of characters.
+    pub text: String,
+}
+
+impl ExpectedMessage {
+    /// Whether `message` is this one: same node and level, and the text matches the pattern.
+    pub fn matches(&self, message: &Message) -> bool {
+        message.node == self.node
+            && message.level == self.level
+            && text_matches(&self.text, &message.text)
+    }
+}
+
+/// Whether `text` contains `pattern`, where `*` in the pattern stands for any run of
+/// characters (so `"radius * is not positive"` matches `"circle radius -1 is not positive"`).
+pub fn text_matches(pattern: &str, text: &str) -> bool {
+    let mut rest = text;
+    let mut pieces = pattern.split('*').filter(|p| !p.is_empty());
+    // The first piece may start anywhere, and so may every later one after its predecessor:
+    // the pattern is unanchored at both ends.
+    pieces.all(|piece| match rest.find(piece) {
+        Some(at) => {
+            rest = &rest[at + piece.len()..];
+            true
+        }
+        None => false,
+    })
 }
 
 /// The id of a node in a graph: unique, stable and readable (`sphere_1`).
@@ -167,4 +206,52 @@ pub struct GraphOutput {
     pub name: String,
     /// The output it reads.
     pub source: PortRef,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn patterns_match_substrings_with_wildcards() {
+        assert!(text_matches("radius", "circle radius -1 is not positive"));
+        assert!(text_matches(
+            "radius * positive",
+            "circle radius -1 is not positive"
+        ));
+        assert!(text_matches("", "anything"));
+        assert!(text_matches("*", ""));
+        assert!(!text_matches(
+            "positive * radius",
+            "circle radius -1 is not positive"
+        ));
+        assert!(!text_matches(
+            "radius 2",
+            "circle radius -1 is not positive"
+        ));
+        assert!(text_matches("a*a", "aa"));
+        assert!(!text_matches("a*a", "a"));
+    }
+
+    #[test]
+    fn expected_messages_match_node_level_and_text() {
+        let expected = ExpectedMessage {
+            node: "d".into(),
+            level: Level::Error,
+            text: "by zero".to_owned(),
+        };
+        let mut m = Message {
+            node: "d".into(),
+            level: Level::Error,
+            path: None,
+            index: None,
+            text: "division by zero".to_owned(),
+        };
+        assert!(expected.matches(&m));
+        m.level = Level::Warning;
+        assert!(!expected.matches(&m));
+        m.level = Level::Error;
+        m.node = "e".into();
+        assert!(!expected.matches(&m));
+    }
 }

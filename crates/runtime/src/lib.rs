@@ -174,16 +174,21 @@ pub use crate::checking::check::{Checked, check, check_text};
 pub use crate::checking::diagnostic::{
     Diagnostic, DiagnosticKind, Location, PortDirection, Severity,
 };
-pub use crate::compare::{COMPARE_TOLERANCE, compare_trees, values_agree};
+pub use crate::compare::{COMPARE_TOLERANCE, compare_expected, compare_trees, values_agree};
 pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};
 pub use crate::evaluation::solve::{ListView, Solve};
+pub use crate::file::bless::BlessOutput;
+pub use crate::file::canonical::CommentInside;
+pub use crate::file::expected::{
+    BREP_SUMMARY_TOLERANCE, BrepSummary, ExpectedItem, ExpectedTree, expectation_literal,
+};
 pub use crate::file::format::{Document, write_graph};
 pub use crate::file::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal};
 pub use crate::file::value_text::{format_number, format_value, parse_number};
 pub use crate::graph::{
-    FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier, NodeId, PortRef,
-    Wire,
+    ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier,
+    NodeId, PortRef, Wire, text_matches,
 };
 pub use crate::host::{LoadError, load_file};
 pub use crate::limits::{
@@ -193,7 +198,7 @@ pub use crate::limits::{
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
-    VariableInputs,
+    ValueConstraint, VariableInputs,
 };
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;

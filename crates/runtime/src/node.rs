@@ -76,6 +76,40 @@ pub struct Port {
     pub optional: bool,
     /// The value an unconnected input takes when the graph gives none.
     pub default: Option<Value>,
+    /// A static constraint on the items of literal values given to this input (a radius is
+    /// positive), checked before the graph runs; see [`Port::constraint`].
+    pub constraint: Option<ValueConstraint>,
+}
+
+/// A check of one item of a literal value, known before running: `Err` says why the item is
+/// not acceptable (`radius -1 is not positive`). Wired data is checked by the node as it runs.
+#[derive(Clone)]
+pub struct ValueConstraint(pub Arc<ConstraintFn>);
+
+/// The function behind a [`ValueConstraint`].
+pub type ConstraintFn = dyn Fn(&Value) -> Result<(), String> + Send + Sync;
+
+impl ValueConstraint {
+    /// Checks one item.
+    ///
+    /// # Errors
+    /// Why the item does not meet the constraint.
+    pub fn check(&self, value: &Value) -> Result<(), String> {
+        (self.0)(value)
+    }
+}
+
+impl fmt::Debug for ValueConstraint {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("ValueConstraint")
+    }
+}
+
+impl PartialEq for ValueConstraint {
+    /// Constraints are equal when they are the same function.
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
 }
 
 impl Port {
@@ -89,7 +123,19 @@ impl Port {
             access: Access::Item,
             optional: false,
             default: None,
+            constraint: None,
         }
+    }
+
+    /// Declares a static constraint on the items of literal values given to this input:
+    /// checking reports an item that fails it as a bad value, naming the node, port and item,
+    /// before anything runs.
+    pub fn constraint(
+        mut self,
+        check: impl Fn(&Value) -> Result<(), String> + Send + Sync + 'static,
+    ) -> Self {
+        self.constraint = Some(ValueConstraint(Arc::new(check)));
+        self
     }
 
     /// Sets the description.
@@ -241,7 +287,9 @@ pub struct NodeType {
     pub settings: Vec<Setting>,
     /// The solve function.
     pub solve: SolveFn,
-    /// The optional prepare function.
+    /// The optional prepare function. Checking runs it too (it sees only settings and input
+    /// names, which are known before running), so a failure is a check error with the file
+    /// position rather than a runtime message.
     pub prepare: Option<PrepareFn>,
     /// The item function behind `solve`, when the type was declared with `lift1`/`lift2`/
     /// `lift3`: the runtime runs it as a loop over typed columns.

@@ -196,6 +196,7 @@ fn random_graph() -> impl Strategy<Value = Graph> {
                 .into_iter()
                 .map(|(name, source)| GraphOutput { name, source })
                 .collect(),
+            expected_messages: Vec::new(),
         })
 }
 

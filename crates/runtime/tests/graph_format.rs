@@ -126,6 +126,7 @@ fn a_graph_built_in_code_survives_save_and_load() {
             "result".to_owned(),
             Literal("{\"{0;0}\": [1, 2], \"{0;1}\": []}".to_owned()),
         )],
+        expected_messages: Vec::new(),
     };
     let text = graph.to_ron();
     assert_eq!(Graph::from_ron(&text).unwrap(), graph, "{text}");

@@ -1,38 +1,17 @@
-//! Shared helpers for the kernel's integration tests: locating and loading the oracle files.
+//! Shared helpers for the kernel's integration tests: loading the oracle files (located by
+//! `locus_test_data`, the one place that knows where test data lives) and comparing numbers.
 
 #![allow(
     dead_code,
     reason = "each test binary uses its own subset of the helpers"
 )]
 
-use std::path::{Path, PathBuf};
-
 use serde_json::Value;
 
-/// The `shared/oracle` directory, found by walking up from the crate's manifest directory.
-///
-/// In the development layout the repository sits next to `shared/`; in CI the repository is
-/// cloned with `shared/` beside it. Either way one of the ancestors has a `shared/oracle` child.
-pub fn oracle_dir() -> PathBuf {
-    let start = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for dir in start.ancestors() {
-        let candidate = dir.join("shared").join("oracle");
-        if candidate.join("README.md").is_file() {
-            return candidate;
-        }
-    }
-    panic!(
-        "no shared/oracle directory above {}; clone the shared reference data beside the repository",
-        start.display()
-    );
-}
-
-/// Loads one oracle file (`opennurbs-cases.json` or `occt-cases.json`) as JSON.
+/// Loads one oracle file (`opennurbs-cases.json` or `occt-cases.json`) as JSON, from the
+/// repository's checked-in copy (`tests/data/oracle/`, through `locus_test_data`).
 pub fn load_oracle(file: &str) -> Value {
-    let path = oracle_dir().join(file);
-    let text = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
-    serde_json::from_str(&text).unwrap_or_else(|e| panic!("cannot parse {}: {e}", path.display()))
+    locus_test_data::load_oracle(file)
 }
 
 /// A JSON number as `f64`.

@@ -59,7 +59,8 @@ pub fn circle() -> NodeType {
         .input(
             Port::new("Radius", "R", DataType::Number)
                 .doc("Radius of the circle, in model units, positive. Default 1.")
-                .default_value(1.0),
+                .default_value(1.0)
+                .constraint(crate::constraints::positive_radius),
         )
         .output(Port::new("Circle", "C", DataType::Circle).doc("The circle."))
         .lift2(|plane: &Plane, radius: &f64| Ok(Circle::new(*plane, *radius)?))
@@ -83,7 +84,8 @@ pub fn arc() -> NodeType {
         .input(
             Port::new("Radius", "R", DataType::Number)
                 .doc("Radius of the arc, in model units, positive. Default 1.")
-                .default_value(1.0),
+                .default_value(1.0)
+                .constraint(crate::constraints::positive_radius),
         )
         .input(
             Port::new("Angle", "A", DataType::Domain)

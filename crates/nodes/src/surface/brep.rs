@@ -253,15 +253,7 @@ mod tests {
     use crate::vector::test_support::{assert_clean, items, messages};
 
     fn oracle_breps() -> serde_json::Value {
-        let start = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let file = start
-            .ancestors()
-            .map(|d| d.join("shared/oracle/opennurbs-cases.json"))
-            .find(|p| p.is_file())
-            .expect("the shared oracle file");
-        let text = std::fs::read_to_string(file).expect("readable oracle");
-        let json: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
-        json["breps"].clone()
+        locus_test_data::load_oracle("opennurbs-cases.json")["breps"].clone()
     }
 
     pub(crate) fn box_brep(size: [f64; 3]) -> Shared<Brep> {

@@ -41,6 +41,7 @@ fn base_port(doc: &str) -> Port {
 fn radius_port(doc: &str) -> Port {
     Port::new("Radius", "R", DataType::Number)
         .default_value(1.0)
+        .constraint(crate::constraints::positive_radius)
         .doc(doc)
 }
 

@@ -13,7 +13,9 @@ use std::sync::Arc;
 
 use petgraph::graph::{DiGraph, NodeIndex};
 
+use crate::checking::before_run::check_before_run;
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+use crate::file::expected::ExpectedTree;
 use crate::file::format::{Document, SourceMap};
 use crate::file::literal::{LiteralError, tree_from_node, value_from_node};
 use crate::file::syntax::{self, Node};
@@ -157,14 +159,24 @@ impl<'a> Checker<'a> {
         let outputs = self.named_outputs();
         self.required_inputs();
         self.expected(&outputs);
+        self.expected_messages();
         self.cycles();
         let mut diagnostics = std::mem::take(&mut self.diagnostics);
         diagnostics.sort_by_key(|d| d.location.map_or(usize::MAX, |l| l.offset));
         if diagnostics.iter().any(Diagnostic::is_error) {
             return Err(diagnostics);
         }
+        let (graph, doc) = (self.graph, self.doc);
+        let plan = self.plan(outputs);
+        // What can be known before running: prepare steps and literal values' constraints.
+        let before_run = check_before_run(&plan, graph, doc);
+        if !before_run.is_empty() {
+            diagnostics.extend(before_run);
+            diagnostics.sort_by_key(|d| d.location.map_or(usize::MAX, |l| l.offset));
+            return Err(diagnostics);
+        }
         Ok(Checked {
-            plan: self.plan(outputs),
+            plan,
             warnings: diagnostics,
         })
     }

@@ -11,8 +11,8 @@ use std::ops::Range;
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location};
 use crate::file::syntax::{self, Field, Kind, LineIndex, Node};
 use crate::{
-    FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Matching, Modifier, NodeId,
-    PortRef, Wire,
+    ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal,
+    Matching, Modifier, NodeId, PortRef, Wire,
 };
 
 const GRAPH_FIELDS: &[&str] = &[
@@ -24,7 +24,10 @@ const GRAPH_FIELDS: &[&str] = &[
     "inputs",
     "outputs",
     "expected",
+    "expected_messages",
 ];
+
+const EXPECTED_MESSAGE_FIELDS: &[&str] = &["node", "level", "text"];
 
 const NODE_FIELDS: &[&str] = &[
     "id",
@@ -61,6 +64,12 @@ pub(crate) struct SourceMap {
     pub expected: Vec<[Range<usize>; 2]>,
     /// The whole `expected: {…}` field, when present.
     pub expected_field: Option<Range<usize>>,
+    /// The `{…}` value of the `expected` field, when present.
+    pub expected_value: Option<Range<usize>>,
+    /// Per expected message: the node id string.
+    pub expected_messages: Vec<Range<usize>>,
+    /// The `[…]` value of the `expected_messages` field, when present.
+    pub expected_messages_value: Option<Range<usize>>,
     /// The offset of the `)` that closes the graph.
     pub graph_end: usize,
 }
@@ -358,10 +367,20 @@ impl Reader<'_> {
                 }
                 "expected" => {
                     map.expected_field = Some(f.name_span.start..v.span.end);
+                    map.expected_value = Some(v.span.clone());
                     for (key, value) in self.map(v, "`expected`") {
                         let name = self.string(key, "an expected output").unwrap_or_default();
                         graph.expected.push((name, Literal(value.to_compact())));
                         map.expected.push([key.span.clone(), value.span.clone()]);
+                    }
+                }
+                "expected_messages" => {
+                    map.expected_messages_value = Some(v.span.clone());
+                    for item in self.list(v, "`expected_messages`") {
+                        if let Some((message, span)) = self.expected_message(item) {
+                            graph.expected_messages.push(message);
+                            map.expected_messages.push(span);
+                        }
                     }
                 }
                 _ => {}
@@ -487,6 +506,55 @@ impl Reader<'_> {
         (node, spans)
     }
 
+    /// One entry of `expected_messages`: `(node: "d", level: error, text: "by zero")`.
+    fn expected_message(&mut self, item: &Node) -> Option<(ExpectedMessage, Range<usize>)> {
+        let context = "an expected message";
+        let fields = self.fields(item, EXPECTED_MESSAGE_FIELDS, "Message", context)?;
+        let mut ok = true;
+        for missing in EXPECTED_MESSAGE_FIELDS {
+            if !fields.iter().any(|f| f.name == *missing) {
+                self.malformed(
+                    item.span.start..item.span.start,
+                    format!("missing field `{missing}` in {context}"),
+                );
+                ok = false;
+            }
+        }
+        let mut message = ExpectedMessage {
+            node: NodeId::default(),
+            level: Level::Error,
+            text: String::new(),
+        };
+        let mut node_span = item.span.clone();
+        for f in fields {
+            let v = &f.value;
+            match f.name.as_str() {
+                "node" => match self.string(v, "`node` of an expected message") {
+                    Some(id) => {
+                        message.node = NodeId(id);
+                        node_span = v.span.clone();
+                    }
+                    None => ok = false,
+                },
+                "level" => match &v.kind {
+                    Kind::Ident(l) if l == "error" => message.level = Level::Error,
+                    Kind::Ident(l) if l == "warning" => message.level = Level::Warning,
+                    Kind::Ident(l) if l == "remark" => message.level = Level::Remark,
+                    _ => {
+                        self.expect_kind(v, "error, warning or remark", "`level`");
+                        ok = false;
+                    }
+                },
+                "text" => match self.string(v, "`text` of an expected message") {
+                    Some(t) => message.text = t,
+                    None => ok = false,
+                },
+                _ => {}
+            }
+        }
+        ok.then_some((message, node_span))
+    }
+
     fn modifiers(&mut self, value: &Node) -> (Vec<Modifier>, Vec<Range<usize>>) {
         let mut list = Vec::new();
         let mut spans = Vec::new();
@@ -590,6 +658,24 @@ fn literal_map(entries: &[(String, Literal)]) -> Node {
 
 fn expected_node(expected: &[(String, Literal)]) -> Node {
     literal_map(expected)
+}
+
+/// The `expected_messages` list: one `(node: …, level: …, text: …)` struct per message.
+pub(crate) fn expected_messages_node(messages: &[ExpectedMessage]) -> Node {
+    let items = messages
+        .iter()
+        .map(|m| {
+            Node::new(Kind::Struct(
+                None,
+                vec![
+                    field("node", string_node(&m.node.0)),
+                    field("level", ident(m.level.name())),
+                    field("text", string_node(&m.text)),
+                ],
+            ))
+        })
+        .collect();
+    Node::new(Kind::List(items))
 }
 
 fn node_node(node: &GraphNode) -> Node {
@@ -701,6 +787,10 @@ pub fn write_graph(graph: &Graph) -> String {
     }
     if !graph.expected.is_empty() {
         section(&mut out, "expected", expected_node(&graph.expected));
+    }
+    if !graph.expected_messages.is_empty() {
+        let messages = expected_messages_node(&graph.expected_messages);
+        section(&mut out, "expected_messages", messages);
     }
     out.push_str(")\n");
     out

@@ -261,7 +261,7 @@ impl<'a> Checker<'a> {
             };
             let data_type = r.node_type.outputs[k].data_type;
             if let Err((message, at)) = self.parse_literal(literal, spans.map(|s| &s[1]), |n| {
-                tree_from_node(n, data_type)
+                ExpectedTree::from_node(n, data_type)
             }) {
                 self.error(
                     DiagnosticKind::BadExpected {
@@ -269,6 +269,21 @@ impl<'a> Checker<'a> {
                         message,
                     },
                     at.or(spans.map(|s| s[1].start)),
+                );
+            }
+        }
+    }
+
+    /// Expected messages must name nodes of the graph.
+    pub(super) fn expected_messages(&mut self) {
+        for (e, m) in self.graph.expected_messages.iter().enumerate() {
+            if !self.index.contains_key(m.node.0.as_str()) {
+                let at = self.map().and_then(|map| map.expected_messages.get(e));
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!("expected message for unknown node \"{}\"", m.node),
+                    },
+                    at.map(|s| s.start),
                 );
             }
         }
