@@ -2,9 +2,7 @@
 //! what rhino3dm's `CommonObject.Encode`/`Decode` use) for curves, surfaces, B-reps and meshes.
 //!
 //! The archive reader and writer are the `locus-opennurbs-archive` crate; every other module
-//! goes through these two functions. Curves and NURBS surfaces go both ways. B-reps cannot be
-//! written yet (a per-item error naming the output), and meshes, which the archive reads, are
-//! not a locus value type yet.
+//! goes through these two functions. Curves, NURBS surfaces, B-reps and meshes go both ways.
 
 use locus_opennurbs_archive::{Geometry, decode_json, encode_json};
 use locus_runtime::{Shared, Value};
@@ -35,10 +33,11 @@ pub fn encode(value: &Value) -> Result<(&'static str, String), String> {
     let geometry = match value {
         Value::Curve(c) => Geometry::Curve((**c).clone()),
         Value::Surface(s) => Geometry::Surface((**s).clone()),
+        Value::Brep(b) => Geometry::Brep((**b).clone()),
+        Value::Mesh(m) => Geometry::Mesh((**m).clone()),
         other => {
             return Err(format!(
-                "a {} cannot be sent in Rhino.Compute form by this build yet (the openNURBS \
-                 archive writer has no B-reps); POST /v1/run gives its exact data",
+                "a {} is not archive geometry; POST /v1/run gives its exact data",
                 other.data_type().name()
             ));
         }
@@ -56,7 +55,8 @@ pub fn decode(type_name: &str, data: &Json) -> Result<Value, String> {
     match decode_json(data) {
         Ok(Geometry::Curve(c)) => Ok(Value::Curve(Shared::new(c))),
         Ok(Geometry::Surface(s)) => Ok(Value::Surface(Shared::new(s))),
-        Ok(Geometry::Mesh(_)) => Err("meshes are not a locus value type yet".into()),
+        Ok(Geometry::Brep(b)) => Ok(Value::Brep(Shared::new(b))),
+        Ok(Geometry::Mesh(m)) => Ok(Value::Mesh(Shared::new(m))),
         Err(e) => Err(format!("a {type_name} item does not read: {e}")),
     }
 }

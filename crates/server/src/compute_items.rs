@@ -27,7 +27,12 @@ pub fn dotnet_type(data_type: DataType) -> Option<&'static str> {
         DataType::Line => "Rhino.Geometry.Line",
         DataType::Circle => "Rhino.Geometry.Circle",
         DataType::Arc => "Rhino.Geometry.Arc",
-        DataType::Curve | DataType::Surface | DataType::Brep | DataType::Generic => return None,
+        DataType::Colour => "System.Drawing.Color",
+        DataType::Curve
+        | DataType::Surface
+        | DataType::Brep
+        | DataType::Mesh
+        | DataType::Generic => return None,
     })
 }
 
@@ -312,9 +317,10 @@ fn value_of(j: &Json, t: DataType) -> Result<Value, String> {
             }
             Value::Transform(Transform::from_rows(rows))
         }
-        DataType::Curve | DataType::Surface | DataType::Brep => {
+        DataType::Curve | DataType::Surface | DataType::Brep | DataType::Mesh => {
             return archive::decode(t.name(), j);
         }
+        DataType::Colour => return Err("colour inputs are not read in Compute form yet".into()),
         DataType::Generic => infer(j)?,
     })
 }
@@ -402,7 +408,15 @@ pub fn encode_value(value: &Value) -> Result<(&'static str, String), String> {
             "AngleDomain": interval_json(a.angle),
         })
         .to_string(),
-        Value::Curve(_) | Value::Surface(_) | Value::Brep(_) => return archive::encode(value),
+        Value::Curve(_) | Value::Surface(_) | Value::Brep(_) | Value::Mesh(_) => {
+            return archive::encode(value);
+        }
+        // As Json.NET writes a System.Drawing.Color (its TypeConverter): "R, G, B", with the
+        // alpha first when the colour is not opaque.
+        Value::Colour(c) if c.a == 255 => {
+            Json::String(format!("{}, {}, {}", c.r, c.g, c.b)).to_string()
+        }
+        Value::Colour(c) => Json::String(format!("{}, {}, {}, {}", c.a, c.r, c.g, c.b)).to_string(),
     };
     let type_name = dotnet_type(value.data_type()).unwrap_or("System.Object");
     Ok((type_name, data))

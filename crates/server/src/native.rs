@@ -415,6 +415,32 @@ pub fn value_json(value: &Value) -> Json {
             }).collect::<Vec<_>>(),
             "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
         }}),
+        // As `locus run --format json` writes them (docs/json-output.md).
+        Value::Mesh(m) => {
+            let mut mesh = Map::new();
+            mesh.insert(
+                "vertices".into(),
+                m.vertices().iter().map(|p| point_json(*p)).collect(),
+            );
+            mesh.insert(
+                "faces".into(),
+                m.faces().iter().map(|f| json!(f.corners())).collect(),
+            );
+            if let Some(n) = m.normals() {
+                mesh.insert(
+                    "normals".into(),
+                    n.iter().map(|v| xyz(v.x, v.y, v.z)).collect(),
+                );
+            }
+            if let Some(c) = m.colors() {
+                mesh.insert(
+                    "colours".into(),
+                    c.iter().map(|c| json!([c.r, c.g, c.b, c.a])).collect(),
+                );
+            }
+            json!({ "mesh": Json::Object(mesh) })
+        }
+        Value::Colour(c) => json!({ "colour": [c.r, c.g, c.b, c.a] }),
     }
 }
 
