@@ -45,7 +45,11 @@ impl LoadError {
 
 /// Reads and checks a graph file.
 pub(crate) fn load(registry: &NodeRegistry, path: &Path) -> Result<Loaded, LoadError> {
-    let text = std::fs::read_to_string(path).map_err(|e| LoadError::Io(e.to_string()))?;
+    let text = if crate::grasshopper::is_grasshopper(path) {
+        crate::grasshopper::load_text(registry, path).map_err(LoadError::Io)?
+    } else {
+        std::fs::read_to_string(path).map_err(|e| LoadError::Io(e.to_string()))?
+    };
     let document = Document::parse(&text).map_err(LoadError::Diagnostics)?;
     let checked = document.check(registry).map_err(LoadError::Diagnostics)?;
     Ok(Loaded { document, checked })

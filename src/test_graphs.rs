@@ -31,7 +31,13 @@ fn collect(path: &Path, files: &mut Vec<PathBuf>) -> Result<(), String> {
         for entry in entries {
             let entry = entry.map_err(|e| format!("cannot read {}: {e}", path.display()))?;
             let p = entry.path();
-            if p.is_dir() || p.extension().is_some_and(|e| e == "ron") {
+            if p.is_dir()
+                || p.extension().is_some_and(|e| e == "ron")
+                    && !p
+                        .to_string_lossy()
+                        .ends_with(crate::grasshopper::EXPECTED_SUFFIX)
+                || crate::grasshopper::is_grasshopper(&p)
+            {
                 collect(&p, files)?;
             }
         }
@@ -110,6 +116,9 @@ fn bless(registry: &NodeRegistry, path: &Path, threads: Option<usize>) -> Result
     for (name, tree) in ev.outputs() {
         let literal = Literal::from_tree(tree).map_err(|e| format!("output {name}: {e}"))?;
         expected.push((name.to_owned(), literal));
+    }
+    if crate::grasshopper::is_grasshopper(path) {
+        return crate::grasshopper::write_expected(path, &expected);
     }
     let text = loaded.document.with_expected(&expected);
     std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))

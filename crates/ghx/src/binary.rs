@@ -41,7 +41,20 @@ pub fn read_compressed(
         format!("cluster at depth {cluster_depth}")
     };
     let data = inflate(bytes, limits, &context)?;
-    read_binary(&data, limits)
+    let root = read_binary(&data, limits)?;
+    // A file's root chunk is "Root"; a cluster's is "Document".
+    let expected = if cluster_depth == 0 {
+        "Root"
+    } else {
+        "Document"
+    };
+    if root.name != expected {
+        return Err(ArchiveError::Bad {
+            path: root.name,
+            reason: format!("not a Grasshopper archive (the root chunk is not \"{expected}\")"),
+        });
+    }
+    Ok(root)
 }
 
 /// Inflates raw deflate data within the size and ratio bounds of `limits`.
@@ -75,7 +88,8 @@ pub fn inflate(bytes: &[u8], limits: &Limits, context: &str) -> Result<Vec<u8>, 
     Ok(out)
 }
 
-/// Reads an uncompressed binary archive; its root chunk must be `Root`.
+/// Reads an uncompressed binary archive: its root chunk and everything in it, which must
+/// fill the data exactly.
 pub fn read_binary(data: &[u8], limits: &Limits) -> Result<Chunk, ArchiveError> {
     let mut reader = Reader {
         data,
@@ -85,10 +99,13 @@ pub fn read_binary(data: &[u8], limits: &Limits) -> Result<Chunk, ArchiveError> 
         entries: 0,
     };
     let root = reader.chunk()?;
-    if root.name != "Root" {
+    if reader.pos != data.len() {
         return Err(ArchiveError::Bad {
             path: root.name,
-            reason: "not a Grasshopper archive (the root chunk is not \"Root\")".to_owned(),
+            reason: format!(
+                "{} bytes after the end of the root chunk",
+                data.len() - reader.pos
+            ),
         });
     }
     Ok(root)

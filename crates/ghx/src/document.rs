@@ -138,7 +138,7 @@ pub enum GhItem {
 /// Reads the definition in an archive's root chunk.
 pub fn read_document(root: &Chunk) -> Result<GhDocument, ArchiveError> {
     let def = root.chunk("Definition").ok_or_else(|| ArchiveError::Bad {
-        path: "Root".to_owned(),
+        path: root.name.clone(),
         reason: "no Definition chunk: not a Grasshopper definition".to_owned(),
     })?;
     let mut doc = GhDocument::default();

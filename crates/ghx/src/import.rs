@@ -58,6 +58,8 @@ struct Mapper<'a> {
     sources: HashMap<String, Source>,
     /// Object instance GUID → node (for groups).
     nodes_by_object: HashMap<String, NodeId>,
+    /// Input parameter instance GUID → input port (for groups that name a port).
+    input_ports: HashMap<String, PortRef>,
     /// Inputs to wire once every object is known.
     pending: Vec<PendingInput>,
     /// Named inputs and outputs, in the order found.
@@ -95,6 +97,7 @@ pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limit
         ids: HashSet::new(),
         sources: HashMap::new(),
         nodes_by_object: HashMap::new(),
+        input_ports: HashMap::new(),
         pending: Vec::new(),
         inputs: Vec::new(),
         outputs: Vec::new(),
@@ -123,7 +126,7 @@ fn object_ref(o: &GhObject, cluster: &str) -> ObjectRef {
 fn slug(text: &str) -> String {
     let mut out = String::new();
     for c in text.chars() {
-        if c.is_alphanumeric() || c == '-' {
+        if c.is_alphanumeric() || c == '-' || c == '/' {
             out.extend(c.to_lowercase());
         } else if !out.ends_with('_') {
             out.push('_');
@@ -424,6 +427,13 @@ impl Mapper<'_> {
         }
         for (k, p) in o.inputs.iter().enumerate() {
             let (port, data_type) = input_ports[k].clone();
+            self.input_ports.insert(
+                p.instance.clone(),
+                PortRef {
+                    node: id.clone(),
+                    port: port.clone(),
+                },
+            );
             self.input_data(&mut node, &r, p, &port, data_type);
         }
         if node_type.id == "maths.expression"
@@ -795,6 +805,7 @@ impl Mapper<'_> {
             for s in &input.sources {
                 self.resolve(s, &mut Vec::new(), &mut resolved);
             }
+            let mut missing = false;
             for r in resolved {
                 match r {
                     Ok(from) => self.graph.wires.push(Wire {
@@ -804,15 +815,33 @@ impl Mapper<'_> {
                             port: input.port.clone(),
                         },
                     }),
-                    Err(why) => self.diag(
-                        Level::Warning,
-                        "no-data",
-                        format!("node \"{}\" input {}: {why}", input.node, input.port),
-                        Some(input.object.clone()),
-                        Some(input.node.clone()),
-                        Some(input.port.clone()),
-                    ),
+                    Err(why) => {
+                        missing = true;
+                        self.diag(
+                            Level::Warning,
+                            "no-data",
+                            format!("node \"{}\" input {}: {why}", input.node, input.port),
+                            Some(input.object.clone()),
+                            Some(input.node.clone()),
+                            Some(input.port.clone()),
+                        );
+                    }
                 }
+            }
+            let wired = self
+                .graph
+                .wires
+                .iter()
+                .any(|w| w.to.node == input.node && w.to.port == input.port);
+            if missing
+                && !wired
+                && let Some(node) = self.graph.nodes.iter_mut().find(|n| n.id == input.node)
+            {
+                // Nothing reaches the input: it is empty (no branches), so the node runs on no
+                // data, as in Grasshopper, instead of the graph failing to check.
+                node.values.retain(|(p, _)| *p != input.port);
+                node.values
+                    .push((input.port.clone(), Literal("{}".to_owned())));
             }
         }
         let panels = std::mem::take(&mut self.panels);
@@ -844,11 +873,29 @@ impl Mapper<'_> {
             } else {
                 continue;
             };
+            // The old convention puts a type code first: `RH_IN:102:name`.
+            let name = match name.split_once(':') {
+                Some((code, rest))
+                    if !rest.is_empty()
+                        && code.len() == 3
+                        && code.bytes().all(|b| b.is_ascii_digit()) =>
+                {
+                    rest
+                }
+                _ => name,
+            };
             for id in g.container.items_named("ID") {
                 let Some(target) = id.value.as_str() else {
                     continue;
                 };
                 let Some(node) = self.nodes_by_object.get(target).cloned() else {
+                    // A group may name a component's port (as `locus export-ghx` writes them).
+                    if is_in && let Some(port) = self.input_ports.get(target).cloned() {
+                        self.inputs.retain(|(_, p)| *p != port);
+                        self.inputs.push((name.to_owned(), port));
+                    } else if !is_in && let Some(Source::Port(port)) = self.sources.get(target) {
+                        self.outputs.push((name.to_owned(), port.clone()));
+                    }
                     continue;
                 };
                 let Some(graph_node) = self.graph.nodes.iter().find(|n| n.id == node) else {

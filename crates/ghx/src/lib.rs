@@ -22,6 +22,7 @@ mod archive;
 mod binary;
 mod document;
 mod error;
+mod export;
 mod import;
 mod known;
 mod limits;
@@ -36,6 +37,7 @@ pub use crate::document::{
     GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree, Library, read_cluster, read_document,
 };
 pub use crate::error::ArchiveError;
+pub use crate::export::{ExportError, ExportWarning, export_ghx};
 pub use crate::import::{Import, import_document};
 pub use crate::known::{KNOWN, Special, special};
 pub use crate::limits::Limits;
