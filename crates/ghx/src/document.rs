@@ -316,7 +316,8 @@ fn read_item(chunk: &Chunk) -> GhItem {
     if chunk.chunk("ON_Data").is_some() || chunk.item("ON_Data").is_some() {
         return GhItem::Other("ON_Data".to_owned());
     }
-    let Some(item) = chunk.items.first() else {
+    // Generic data carries a `TypeName` item beside the value.
+    let Some(item) = chunk.items.iter().find(|i| i.name != "TypeName") else {
         return GhItem::Other(
             chunk
                 .chunks

@@ -58,6 +58,8 @@ struct Mapper<'a> {
     sources: HashMap<String, Source>,
     /// Object instance GUID → node (for groups).
     nodes_by_object: HashMap<String, NodeId>,
+    /// Node id → index in `graph.nodes`.
+    node_pos: HashMap<NodeId, usize>,
     /// Input parameter instance GUID → input port (for groups that name a port).
     input_ports: HashMap<String, PortRef>,
     /// Inputs to wire once every object is known.
@@ -98,6 +100,7 @@ pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limit
         sources: HashMap::new(),
         nodes_by_object: HashMap::new(),
         input_ports: HashMap::new(),
+        node_pos: HashMap::new(),
         pending: Vec::new(),
         inputs: Vec::new(),
         outputs: Vec::new(),
@@ -448,6 +451,7 @@ impl Mapper<'_> {
         }
         self.notes.push((id.clone(), note));
         self.nodes_by_object.insert(o.instance.clone(), id.clone());
+        self.node_pos.insert(id.clone(), self.graph.nodes.len());
         self.graph.nodes.push(node);
         self.report.objects.push((r, Outcome::Mapped(id.clone())));
         Some(id)
@@ -478,8 +482,22 @@ impl Mapper<'_> {
                 .flat_map(|(_, items)| items)
                 .any(|i| !matches!(i, GhItem::Other(_)))
         {
-            node.values
-                .push((port.to_owned(), literal::tree(tree, data_type)));
+            let value = literal::tree(tree, data_type);
+            match locus_runtime::parse_literal(&value.0, data_type) {
+                Ok(_) => node.values.push((port.to_owned(), value)),
+                Err(e) => self.diag(
+                    Level::Warning,
+                    "bad-value",
+                    format!(
+                        "{r}: the data typed into input {port} ({}) does not read as {}: {e}; left out",
+                        value.0,
+                        data_type.name()
+                    ),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    Some(port.to_owned()),
+                ),
+            }
         }
         let mut mods: Vec<Modifier> = p
             .modifiers
@@ -506,6 +524,22 @@ impl Mapper<'_> {
             })
             .collect();
         mods.dedup();
+        if mods.contains(&Modifier::Simplify)
+            && (mods.contains(&Modifier::Flatten) || mods.contains(&Modifier::Graft))
+        {
+            // locus applies one structural modifier per input; Grasshopper's mapping wins.
+            mods.retain(|m| *m != Modifier::Simplify);
+            self.diag(
+                Level::Warning,
+                "modifiers",
+                format!(
+                    "{r}: input {port} has simplify with flatten or graft; simplify is left out"
+                ),
+                Some(r.clone()),
+                Some(id.clone()),
+                Some(port.to_owned()),
+            );
+        }
         if !mods.is_empty() {
             node.modifiers.push((port.to_owned(), mods));
         }
@@ -778,6 +812,23 @@ impl Mapper<'_> {
         self.libraries = saved;
     }
 
+    /// The data type of a port of a node already in the graph.
+    fn port_type(&self, port: &PortRef, input: bool) -> Option<DataType> {
+        let node = &self.graph.nodes[*self.node_pos.get(&port.node)?];
+        let t = self.registry.get(&node.node_type)?;
+        if input {
+            t.resolve_inputs(node.input_names.as_deref())
+                .iter()
+                .find(|p| p.is_named(&port.port))
+                .map(|p| p.data_type)
+        } else {
+            t.outputs
+                .iter()
+                .find(|p| p.is_named(&port.port))
+                .map(|p| p.data_type)
+        }
+    }
+
     /// Resolves an output GUID to node ports, following pass-throughs.
     fn resolve(&self, guid: &str, seen: &mut Vec<String>, out: &mut Vec<Result<PortRef, String>>) {
         if seen.iter().any(|s| s == guid) || seen.len() > 256 {
@@ -806,15 +857,49 @@ impl Mapper<'_> {
                 self.resolve(s, &mut Vec::new(), &mut resolved);
             }
             let mut missing = false;
+            let mut wired = false;
             for r in resolved {
                 match r {
-                    Ok(from) => self.graph.wires.push(Wire {
-                        from,
-                        to: PortRef {
-                            node: input.node.clone(),
-                            port: input.port.clone(),
-                        },
-                    }),
+                    Ok(from) => {
+                        let (a, b) = (
+                            self.port_type(&from, false),
+                            self.port_type(
+                                &PortRef {
+                                    node: input.node.clone(),
+                                    port: input.port.clone(),
+                                },
+                                true,
+                            ),
+                        );
+                        if let (Some(a), Some(b)) = (a, b)
+                            && !locus_runtime::can_cast(a, b)
+                        {
+                            missing = true;
+                            self.diag(
+                                Level::Warning,
+                                "no-cast",
+                                format!(
+                                    "node \"{}\" input {}: the wire from {from} carries {} data, which does not cast to {}; left out",
+                                    input.node,
+                                    input.port,
+                                    a.name(),
+                                    b.name()
+                                ),
+                                Some(input.object.clone()),
+                                Some(input.node.clone()),
+                                Some(input.port.clone()),
+                            );
+                            continue;
+                        }
+                        wired = true;
+                        self.graph.wires.push(Wire {
+                            from,
+                            to: PortRef {
+                                node: input.node.clone(),
+                                port: input.port.clone(),
+                            },
+                        });
+                    }
                     Err(why) => {
                         missing = true;
                         self.diag(
@@ -828,15 +913,11 @@ impl Mapper<'_> {
                     }
                 }
             }
-            let wired = self
-                .graph
-                .wires
-                .iter()
-                .any(|w| w.to.node == input.node && w.to.port == input.port);
             if missing
                 && !wired
-                && let Some(node) = self.graph.nodes.iter_mut().find(|n| n.id == input.node)
+                && let Some(&k) = self.node_pos.get(&input.node)
             {
+                let node = &mut self.graph.nodes[k];
                 // Nothing reaches the input: it is empty (no branches), so the node runs on no
                 // data, as in Grasshopper, instead of the graph failing to check.
                 node.values.retain(|(p, _)| *p != input.port);
@@ -898,7 +979,8 @@ impl Mapper<'_> {
                     }
                     continue;
                 };
-                let Some(graph_node) = self.graph.nodes.iter().find(|n| n.id == node) else {
+                let Some(graph_node) = self.node_pos.get(&node).map(|&k| &self.graph.nodes[k])
+                else {
                     continue;
                 };
                 let Some(t) = self.registry.get(&graph_node.node_type) else {
