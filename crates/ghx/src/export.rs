@@ -508,10 +508,14 @@ fn write_object(
             if is_param(p.node_type) {
                 let port = &p.inputs[0];
                 let srcs = sources.get(&(id.clone(), port.nickname.clone()));
-                let (n, persistent) = param_items(o, p, port, &object_guid(id), id, srcs, warnings);
+                let (xml, n, persistent) =
+                    param_items(p, port, &object_guid(id), id, srcs, warnings);
                 items_and_chunks(
                     o,
-                    |_| n,
+                    |o| {
+                        o.w.get_mut().extend_from_slice(&xml);
+                        n
+                    },
                     |o| {
                         attributes(o, pos);
                         if let Some(f) = persistent {
@@ -558,18 +562,14 @@ fn write_object(
                                     o.chunk_start(in_name, Some(k));
                                     let srcs = sources.get(&(id.clone(), port.nickname.clone()));
                                     let guid = input_guid(id, &port.nickname);
-                                    let (n, persistent) = param_items(
-                                        o,
-                                        p,
-                                        port,
-                                        &guid,
-                                        &port.nickname,
-                                        srcs,
-                                        warnings,
-                                    );
+                                    let (xml, n, persistent) =
+                                        param_items(p, port, &guid, &port.nickname, srcs, warnings);
                                     items_and_chunks(
                                         o,
-                                        |_| n,
+                                        |o| {
+                                            o.w.get_mut().extend_from_slice(&xml);
+                                            n
+                                        },
                                         |o| {
                                             if let Some(f) = persistent {
                                                 f(o);
@@ -643,14 +643,17 @@ type ChunkWriter<'a> = Box<dyn FnOnce(&mut Out) + 'a>;
 /// The items of one parameter (floating or a component's port), and its persistent data
 /// chunk when it has a value.
 fn param_items<'a>(
-    o: &mut Out,
     p: &Ports<'_>,
     port: &locus_runtime::Port,
     guid: &str,
     nickname: &str,
     srcs: Option<&Vec<String>>,
     warnings: &mut Vec<ExportWarning>,
-) -> (usize, Option<ChunkWriter<'a>>) {
+) -> (Vec<u8>, usize, Option<ChunkWriter<'a>>) {
+    let mut buffer = Out {
+        w: Writer::new_with_indent(Vec::new(), b' ', 2),
+    };
+    let o = &mut buffer;
     let mut n = 0;
     o.item("InstanceGuid", None, 9, guid);
     o.item("Name", None, 10, &port.name);
@@ -724,7 +727,7 @@ fn param_items<'a>(
         },
         _ => None,
     };
-    (n, persistent)
+    (buffer.w.into_inner(), n, persistent)
 }
 
 /// One persistent item: its item name, type code and parts (or text).

@@ -428,6 +428,7 @@ impl Mapper<'_> {
                 }),
             );
         }
+        let resolved = node_type.resolve_inputs(node.input_names.as_deref());
         for (k, p) in o.inputs.iter().enumerate() {
             let (port, data_type) = input_ports[k].clone();
             self.input_ports.insert(
@@ -438,6 +439,18 @@ impl Mapper<'_> {
                 },
             );
             self.input_data(&mut node, &r, p, &port, data_type);
+            let required = resolved
+                .get(k)
+                .is_some_and(|q| q.default.is_none() && !q.optional);
+            let empty = p.sources.is_empty()
+                && !node.values.iter().any(|(q, _)| *q == port)
+                && (required || p.persistent.as_ref().is_some_and(|t| t.branches.is_empty()));
+            if empty {
+                // Nothing reaches the input and nothing was typed in: it is empty, so the node
+                // runs on no data (Grasshopper's "failed to collect data"), instead of the
+                // graph failing to check.
+                node.values.push((port.clone(), Literal("{}".to_owned())));
+            }
         }
         if node_type.id == "maths.expression"
             && let Some(formula) = o.container.str("Expression")
@@ -1012,6 +1025,18 @@ impl Mapper<'_> {
     }
 
     fn finish(mut self) -> Import {
+        // Values in port order, whichever step set them.
+        for node in &mut self.graph.nodes {
+            if let Some(t) = self.registry.get(&node.node_type) {
+                let ports = t.resolve_inputs(node.input_names.as_deref());
+                node.values.sort_by_key(|(name, _)| {
+                    ports
+                        .iter()
+                        .position(|p| p.is_named(name))
+                        .unwrap_or(usize::MAX)
+                });
+            }
+        }
         let mut seen = HashSet::new();
         for (name, target) in std::mem::take(&mut self.inputs) {
             let name = unique_name(&mut seen, name);
