@@ -137,10 +137,15 @@ pub enum GhItem {
 
 /// Reads the definition in an archive's root chunk.
 pub fn read_document(root: &Chunk) -> Result<GhDocument, ArchiveError> {
-    let def = root.chunk("Definition").ok_or_else(|| ArchiveError::Bad {
-        path: root.name.clone(),
-        reason: "no Definition chunk: not a Grasshopper definition".to_owned(),
-    })?;
+    // A file's definition is the chunk `Definition`; a cluster's document is the root itself.
+    let own = root.chunk("DefinitionObjects").is_some().then_some(root);
+    let def = root
+        .chunk("Definition")
+        .or(own)
+        .ok_or_else(|| ArchiveError::Bad {
+            path: root.name.clone(),
+            reason: "no Definition chunk: not a Grasshopper definition".to_owned(),
+        })?;
     let mut doc = GhDocument::default();
     if let Some(props) = def.chunk("DefinitionProperties") {
         doc.name = props.str("Name").unwrap_or_default().to_owned();
