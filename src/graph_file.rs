@@ -93,7 +93,11 @@ impl LoadError {
 
 /// Reads and checks a graph file.
 pub(crate) fn load(registry: &NodeRegistry, path: &Path) -> Result<Loaded, LoadError> {
-    let text = read_graph_file(path, MAX_GRAPH_FILE_BYTES).map_err(LoadError::Io)?;
+    let text = if crate::grasshopper::is_grasshopper(path) {
+        crate::grasshopper::load_text(registry, path).map_err(LoadError::Io)?
+    } else {
+        read_graph_file(path, MAX_GRAPH_FILE_BYTES).map_err(LoadError::Io)?
+    };
     let document = Document::parse(&text).map_err(LoadError::Diagnostics)?;
     let checked = document.check(registry).map_err(LoadError::Diagnostics)?;
     Ok(Loaded { document, checked })

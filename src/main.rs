@@ -29,6 +29,7 @@ mod catalog;
 mod export;
 mod fmt;
 mod graph_file;
+mod grasshopper;
 mod render;
 mod serve;
 mod test_graphs;
@@ -73,7 +74,7 @@ enum Format {
 enum Command {
     /// Evaluate a graph and print its named outputs and every runtime message.
     Run {
-        /// The graph file (.ron).
+        /// The graph file (.ron, or Grasshopper .gh/.ghx).
         graph: PathBuf,
         /// Give a named input a value written as in the graph file: `--set t=0.3`,
         /// `--set A='(1,2,3)'`, `--set N='[1, 2, 3]'`.
@@ -134,9 +135,32 @@ enum Command {
     },
     /// Check a graph and print every problem with file:line:column, node and port.
     Check {
-        /// The graph files.
+        /// The graph files (.ron, or Grasshopper .gh/.ghx).
         #[arg(required = true)]
         graphs: Vec<PathBuf>,
+        /// Output format (json: one array of diagnostics, see docs/grasshopper-files.md).
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
+    /// Import a Grasshopper definition (.gh or .ghx) as a RON graph.
+    Import {
+        /// The Grasshopper file.
+        file: PathBuf,
+        /// Write the graph here instead of printing it.
+        #[arg(short, long, value_name = "FILE.ron")]
+        output: Option<PathBuf>,
+        /// Print a summary: objects read, mapped, dropped and unsupported, and whether the
+        /// whole definition can run.
+        #[arg(long)]
+        report: bool,
+    },
+    /// Write a RON graph as a Grasshopper .ghx file.
+    ExportGhx {
+        /// The graph file (.ron).
+        graph: PathBuf,
+        /// The .ghx file to write.
+        #[arg(short, long, value_name = "FILE.ghx")]
+        output: PathBuf,
     },
     /// Run graphs that carry expected outputs and report pass or fail per graph.
     Test {
@@ -253,7 +277,16 @@ fn main() -> ExitCode {
             threads.map(|n| n as usize),
             &limits,
         ),
-        Command::Check { graphs } => graph_file::check(&registry, &graphs),
+        Command::Check { graphs, format } => match format {
+            Format::Json => grasshopper::check_json(&registry, &graphs),
+            Format::Text => graph_file::check(&registry, &graphs),
+        },
+        Command::Import {
+            file,
+            output,
+            report,
+        } => grasshopper::import(&registry, &file, output.as_deref(), report),
+        Command::ExportGhx { graph, output } => grasshopper::export(&registry, &graph, &output),
         Command::Test {
             paths,
             bless,

@@ -3,8 +3,8 @@
 use std::path::{Path, PathBuf};
 
 use locus_runtime::{
-    BlessOutput, COMPARE_TOLERANCE, DataType, ExpectedMessage, ExpectedTree, Graph, Level, Message,
-    NodeRegistry, compare_expected,
+    BlessOutput, COMPARE_TOLERANCE, DataType, ExpectedMessage, ExpectedTree, Graph, Level, Literal,
+    Message, NodeRegistry, compare_expected,
 };
 
 use crate::graph_file::{evaluator, load};
@@ -35,7 +35,13 @@ fn collect(path: &Path, files: &mut Vec<PathBuf>) -> Result<(), String> {
         for entry in entries {
             let entry = entry.map_err(|e| format!("cannot read {}: {e}", path.display()))?;
             let p = entry.path();
-            if p.is_dir() || p.extension().is_some_and(|e| e == "ron") {
+            if p.is_dir()
+                || p.extension().is_some_and(|e| e == "ron")
+                    && !p
+                        .to_string_lossy()
+                        .ends_with(crate::grasshopper::EXPECTED_SUFFIX)
+                || crate::grasshopper::is_grasshopper(&p)
+            {
                 collect(&p, files)?;
             }
         }
@@ -168,6 +174,16 @@ fn bless(
             if list.len() == 1 { "" } else { "s" },
             list.join("; ")
         ));
+    }
+    if crate::grasshopper::is_grasshopper(path) {
+        // Grasshopper files keep their expectations in a RON file beside them.
+        let mut expected = Vec::new();
+        for (name, tree) in ev.outputs() {
+            let literal = Literal::from_tree(tree).map_err(|e| format!("output {name}: {e}"))?;
+            expected.push((name.to_owned(), literal));
+        }
+        crate::grasshopper::write_expected(path, &expected)?;
+        return Ok(Blessed::Written);
     }
     let mut new_messages: Vec<ExpectedMessage> = Vec::new();
     for m in &undeclared {

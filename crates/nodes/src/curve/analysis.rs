@@ -73,6 +73,7 @@ fn parameter_on(s: &mut Solve<'_>, input: usize, curve: &Curve) -> Result<f64, N
 /// Control Points \[CP\]: the control points, weights and knots of a curve's NURBS form.
 pub fn control_points() -> NodeType {
     analysis(CONTROL_POINTS, "Control Points", "CP")
+        .gh_guid("424eb433-2b3a-4859-beaf-804d8af0afd7")
         .description(
             "Extracts the control points, weights and knots of the NURBS form of a curve (the \
              exact form Rhino gives lines, polylines, circles and arcs). Knots are in Rhino's \
@@ -108,6 +109,7 @@ pub fn control_points() -> NodeType {
 /// Evaluate Curve \[Eval\]: point, tangent and kink angle at a parameter.
 pub fn evaluate_curve() -> NodeType {
     analysis(EVALUATE_CURVE, "Evaluate Curve", "Eval")
+        .gh_guid("fc6979e4-7e91-4508-8e05-37c680779751")
         .description(
             "Evaluates a curve at a parameter: the point, the unit tangent, and the angle \
              between the incoming and the outgoing direction (zero where the curve is smooth, \
@@ -143,6 +145,7 @@ pub fn evaluate_curve() -> NodeType {
 /// Curvature \[Curvature\]: curvature vector and osculating circle at a parameter.
 pub fn curvature() -> NodeType {
     analysis(CURVATURE, "Curvature", "Curvature")
+        .gh_guid("aaa665bd-fd6e-4ccb-8d2c-c5b33072125d")
         .description(
             "Evaluates the curvature of a curve at a parameter: the curvature vector points \
              towards the centre of the osculating circle and its length is the curvature, \
@@ -220,6 +223,7 @@ pub fn curve_domain() -> NodeType {
 /// End Points \[End\]: the start and end points of a curve.
 pub fn end_points() -> NodeType {
     analysis(END_POINTS, "End Points", "End")
+        .gh_guid("11bbd48b-bb0a-4f1b-8167-fa297590390d")
         .description("Extracts the points at the start and the end of a curve's domain.")
         .input(curve_port("Curve to evaluate."))
         .output(Port::new("Start", "S", DataType::Point).doc("Curve start point."))
@@ -235,6 +239,7 @@ pub fn end_points() -> NodeType {
 /// Length \[Len\]: the length of a curve.
 pub fn length() -> NodeType {
     analysis(LENGTH, "Length", "Len")
+        .gh_guid("c75b62fa-0a33-4da7-a5bd-03fd0068fd93")
         .description(
             "Measures the length of a curve: exactly for lines, polylines, circles and arcs, to \
              a relative 1e-12 for NURBS curves.",
@@ -250,6 +255,7 @@ pub fn length() -> NodeType {
 /// Evaluate Length \[Eval\]: point, tangent and parameter at a length along a curve.
 pub fn evaluate_length() -> NodeType {
     analysis(EVALUATE_LENGTH, "Evaluate Length", "Eval")
+        .gh_guid("6b021f56-b194-4210-b9a1-6cef3b7d0848")
         .description(
             "Evaluates a curve at a length along it, measured from the start, either as a \
              fraction of the whole length (normalized, 0 to 1) or in model units.",
@@ -289,6 +295,7 @@ pub fn evaluate_length() -> NodeType {
 /// Curve Closest Point \[Crv CP\]: the point of a curve closest to a point.
 pub fn curve_closest_point() -> NodeType {
     analysis(CURVE_CLOSEST_POINT, "Curve Closest Point", "Crv CP")
+        .gh_guid("2dc44b22-b1dd-460a-a704-6462d6e91096")
         .description(
             "Finds the point of a curve closest to a given point, over the whole curve (its \
              ends, corners and seam included), with its parameter and distance. Where several \

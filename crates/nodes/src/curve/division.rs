@@ -64,6 +64,7 @@ pub fn divide_curve() -> NodeType {
          points, in order.",
         ),
     )
+    .gh_guid("2162e72e-72fc-4bf8-9459-d4d82fa8aa14")
     .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to divide."))
     .input(
         Port::new("Count", "N", DataType::Integer)
@@ -117,6 +118,7 @@ pub fn divide_length() -> NodeType {
              remainder.",
         ),
     )
+    .gh_guid("fdc466a9-d3b8-4056-852a-09dba0f74aca")
     .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to divide."))
     .input(
         Port::new("Length", "L", DataType::Number)
@@ -134,6 +136,7 @@ pub fn divide_length() -> NodeType {
 /// Shatter \[Shatter\]: the pieces of a curve between parameters.
 pub fn shatter() -> NodeType {
     division(SHATTER, "Shatter", "Shatter")
+        .gh_guid("2ad2a4d4-3de1-42f6-a4b8-f71835f35710")
         .description(
             "Cuts a curve at a list of parameters into pieces, in order. Parameters are sorted; \
              those not strictly inside the domain and repeats are ignored; if all are ignored \

@@ -26,6 +26,7 @@ fn primitive(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Line \[Ln\]: the segment between two points.
 pub fn line() -> NodeType {
     primitive(LINE, "Line", "Ln")
+        .gh_guid("4c4e56eb-2f04-43f9-95a3-cc46a14f495a")
         .description(
             "Creates the line segment from a start point to an end point. As a curve its domain \
              is 0 to its length.",
@@ -47,6 +48,7 @@ pub fn line() -> NodeType {
 /// Circle \[Cir\]: a circle from its plane and radius.
 pub fn circle() -> NodeType {
     primitive(CIRCLE, "Circle", "Cir")
+        .gh_guid("807b86e3-be8d-4970-92b5-f8cdcb45b06b")
         .description(
             "Creates the circle about the origin of a plane, in that plane. It starts on the \
              plane's x axis and turns towards its y axis; its domain is 0 to 2π.",
@@ -69,6 +71,7 @@ pub fn circle() -> NodeType {
 /// Arc \[Arc\]: an arc from a plane, a radius and an angle domain.
 pub fn arc() -> NodeType {
     primitive(ARC, "Arc", "Arc")
+        .gh_guid("bb59bffc-f54c-4682-9778-f6c3fe74fce3")
         .description(
             "Creates the arc of the circle about the origin of a plane between two angles, \
              measured in radians from the plane's x axis towards its y axis. A decreasing angle \

@@ -47,6 +47,7 @@ fn curve_length_domain_outputs(node: NodeType, what: &str) -> NodeType {
 /// PolyLine \[PLine\]: the polyline through points.
 pub fn polyline() -> NodeType {
     spline(POLYLINE, "PolyLine", "PLine")
+        .gh_guid("71b5b089-500a-4ea6-81c5-2f960441a0e8")
         .description(
             "Creates the polyline through a list of vertices. When closed, the first vertex is \
              added again at the end (unless the list already ends there). The domain is 0 to the \
@@ -138,6 +139,7 @@ pub fn nurbs_curve() -> NodeType {
         ),
         "The NURBS curve.",
     )
+    .gh_guid("dde71aef-d6ed-40a6-af98-6b0673983c82")
     .input(
         Port::new("Vertices", "V", DataType::Point)
             .doc("Control points; at least 2 (3 for a periodic curve). Nulls are left out.")
@@ -243,6 +245,7 @@ pub fn interpolate() -> NodeType {
         ),
         "The interpolated curve.",
     )
+    .gh_guid("2b2a4145-3dff-41d4-a8de-1ea9d29eef33")
     .input(
         Port::new("Vertices", "V", DataType::Point)
             .doc(
@@ -298,6 +301,7 @@ pub fn uniform_knots(count: usize, degree: usize, periodic: bool) -> Vec<f64> {
 /// Knot Vector \[Knots\]: a uniform knot vector for a number of control points.
 pub fn knot_vector() -> NodeType {
     spline(KNOT_VECTOR, "Knot Vector", "Knots")
+        .gh_guid("846470bd-4918-4d00-9388-7e022b2cba73")
         .description(
             "Creates a uniform knot vector (spacing 1) in Rhino's form, with |N| + degree − 1 \
              knots, ready for Nurbs Curve PWK. A clamped vector repeats its first and last knots \

@@ -46,6 +46,7 @@ fn runs_against(curve: &Curve, guide: &Curve) -> Result<bool, locus_kernel::Erro
 /// Flip Curve \[Flip\]: a curve reversed, optionally only when it runs against a guide.
 pub fn flip_curve() -> NodeType {
     util(FLIP_CURVE, "Flip Curve", "Flip")
+        .gh_guid("22990b1f-9be6-477c-ad89-f775cd347105")
         .description(
             "Reverses the direction of a curve, as Rhino's Flip: the domain t0 to t1 becomes \
              −t1 to −t0, so the point at t moves to −t. With a guide curve the curve is reversed \

@@ -71,6 +71,7 @@ pub fn gate_or() -> NodeType {
         "Boolean disjunction (OR gate): true when A or B (or both) is true.",
         |a, b| a || b,
     )
+    .gh_guid("5cad70f9-5a53-4c5c-a782-54a479b4abe3")
 }
 
 /// Gate Xor \[Xor\]: true when exactly one of A and B is true.
@@ -120,6 +121,7 @@ pub fn gate_xnor() -> NodeType {
 /// Gate Not \[Not\]: the inverse of A.
 pub fn gate_not() -> NodeType {
     NodeType::new(GATE_NOT, "Gate Not", "Not", "Maths")
+        .gh_guid("cb2c7d3c-41b4-4c6d-a6bd-9235bd2851bb")
         .subcategory("Operators")
         .description("Boolean negation (NOT gate): true when A is false.")
         .input(Port::new("A", "A", DataType::Boolean).doc("The boolean to invert."))

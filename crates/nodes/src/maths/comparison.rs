@@ -35,6 +35,7 @@ pub fn larger_than() -> NodeType {
         "Larger",
         "Tests whether A is larger than B, and whether it is larger than or equal to B.",
     )
+    .gh_guid("30d58600-1aab-42db-80a3-f1ea6c4269a0")
     .output(Port::new("Larger than", ">", DataType::Boolean).doc("True if A > B."))
     .output(Port::new("… or Equal to", ">=", DataType::Boolean).doc("True if A ≥ B."))
     .solve(|s| compare(s, |a, b| (a > b, a >= b)))
@@ -48,6 +49,7 @@ pub fn smaller_than() -> NodeType {
         "Smaller",
         "Tests whether A is smaller than B, and whether it is smaller than or equal to B.",
     )
+    .gh_guid("ae840986-cade-4e5a-96b0-570f007d4fc0")
     .output(Port::new("Smaller than", "<", DataType::Boolean).doc("True if A < B."))
     .output(Port::new("… or Equal to", "<=", DataType::Boolean).doc("True if A ≤ B."))
     .solve(|s| compare(s, |a, b| (a < b, a <= b)))
@@ -61,6 +63,7 @@ pub fn equality() -> NodeType {
         "Equals",
         "Tests whether two numbers are exactly equal, and whether they differ.",
     )
+    .gh_guid("5db0fb89-4f22-4f09-a777-fa5e55aed7ec")
     .output(Port::new("Equality", "=", DataType::Boolean).doc("True if A = B exactly."))
     .output(Port::new("Inequality", "≠", DataType::Boolean).doc("True if A ≠ B."))
     .solve(|s| compare(s, |a, b| (a == b, a != b)))

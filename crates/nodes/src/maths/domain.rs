@@ -24,6 +24,7 @@ pub fn register(registry: &mut NodeRegistry) {
 /// Construct Domain \[Dom\]: the domain from A to B.
 pub fn construct_domain() -> NodeType {
     NodeType::new(CONSTRUCT_DOMAIN, "Construct Domain", "Dom", "Maths")
+        .gh_guid("d1a28e95-cf96-4936-bf34-8bf142d731bf")
         .subcategory("Domain")
         .description(
             "Creates a numeric domain from two numbers. The order is kept: A > B makes a \
@@ -62,6 +63,7 @@ pub fn deconstruct_domain() -> NodeType {
         "DeDomain",
         "Maths",
     )
+    .gh_guid("825ea536-aebb-41e9-af32-8baeb2ecb590")
     .subcategory("Domain")
     .description("Splits a numeric domain into its start and end.")
     .input(Port::new("Domain", "I", DataType::Domain).doc("The domain."))
@@ -78,6 +80,7 @@ pub fn deconstruct_domain() -> NodeType {
 /// Remap Numbers \[ReMap\]: moves a number from a source domain to a target domain.
 pub fn remap_numbers() -> NodeType {
     NodeType::new(REMAP_NUMBERS, "Remap Numbers", "ReMap", "Maths")
+        .gh_guid("2fcc2743-8339-4cdf-a046-a1f17439191d")
         .subcategory("Domain")
         .description(
             "Remaps a number from a source domain into a target domain, keeping its relative \

@@ -54,6 +54,7 @@ fn operator(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Addition \[A+B\]: `A + B (+ C …)`.
 pub fn addition() -> NodeType {
     operator(ADDITION, "Addition", "A+B")
+        .gh_guid("a0d62394-a118-422d-abb3-6af115c75b25")
         .description(
             "Adds items: numbers, vectors, and points. A point plus a vector is the moved \
              point; a point plus a point adds the coordinates. Further inputs (C, D, …) may be \
@@ -75,6 +76,8 @@ pub fn addition() -> NodeType {
 /// Subtraction \[A-B\]: `A − B`.
 pub fn subtraction() -> NodeType {
     operator(SUBTRACTION, "Subtraction", "A-B")
+        .gh_guid("2c56ab33-c7cc-4129-886c-d5856b714010")
+        .gh_guid("9c007a04-d0d9-48e4-9da3-9ba142bc4d46")
         .description(
             "Subtracts B from A. A point minus a point is the vector from B to A; a point \
              minus a vector is the moved point.",
@@ -96,6 +99,8 @@ pub fn subtraction() -> NodeType {
 /// Multiplication \[A×B\]: `A × B (× C …)`.
 pub fn multiplication() -> NodeType {
     operator(MULTIPLICATION, "Multiplication", "A×B")
+        .gh_guid("b8963bb1-aa57-476e-a20e-ed6cf635a49c")
+        .gh_guid("ce46b74e-00c9-43c4-805a-193b69ea4a11")
         .description(
             "Multiplies items. A vector (or point) times a number scales it; a vector times a \
              vector is their dot product (a number). Further inputs (C, D, …) may be added and \
@@ -117,6 +122,7 @@ pub fn multiplication() -> NodeType {
 /// Division \[A/B\]: `A ÷ B`.
 pub fn division() -> NodeType {
     operator(DIVISION, "Division", "A/B")
+        .gh_guid("9c85271f-89fa-4e9f-9f4a-d75802120ccc")
         .description(
             "Divides A by B. A vector or point divided by a number is scaled by its inverse. \
              Division by zero gives NaN with a warning (the item is kept, so lists stay \
@@ -138,6 +144,7 @@ pub fn division() -> NodeType {
 /// Negative \[Neg\]: `−x`.
 pub fn negative() -> NodeType {
     operator(NEGATIVE, "Negative", "Neg")
+        .gh_guid("a3371040-e552-4bc8-b0ff-10a840258e88")
         .description("Negates a number, or every coordinate of a vector or point.")
         .input(
             Port::new("Value", "x", DataType::Generic)
@@ -156,6 +163,7 @@ pub fn negative() -> NodeType {
 /// Absolute \[Abs\]: `|x|`.
 pub fn absolute() -> NodeType {
     operator(ABSOLUTE, "Absolute", "Abs")
+        .gh_guid("28124995-cf99-4298-b6f4-c75a8e379f18")
         .description("Computes the absolute value of a number.")
         .input(Port::new("Value", "x", DataType::Number).doc("The number."))
         .output(Port::new("Result", "y", DataType::Number).doc("|x|, never negative."))
@@ -169,6 +177,7 @@ pub fn absolute() -> NodeType {
 /// Power \[Pow\]: `A ^ B`.
 pub fn power() -> NodeType {
     operator(POWER, "Power", "Pow")
+        .gh_guid("78fed580-851b-46fe-af2f-6519a9d378e0")
         .description(
             "Raises A to the power B. A negative A with a fractional B has no real result and \
              gives NaN with a warning.",
@@ -182,6 +191,7 @@ pub fn power() -> NodeType {
 /// Modulus \[Mod\]: the remainder of `A ÷ B`.
 pub fn modulus() -> NodeType {
     operator(MODULUS, "Modulus", "Mod")
+        .gh_guid("431bc610-8ae1-4090-b217-1a9d9c519fe2")
         .description(
             "Divides A by B and returns the remainder of the truncated division: it has the \
              sign of A (−7 mod 3 is −1), as in .NET, which Grasshopper is built on. B = 0 \

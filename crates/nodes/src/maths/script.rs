@@ -53,6 +53,7 @@ fn variable_template() -> Port {
 /// Expression \[Expression\]: a formula of the inputs, given as the `expression` setting.
 pub fn expression() -> NodeType {
     NodeType::new(EXPRESSION, "Expression", "Expression", "Maths")
+        .gh_guid("9df5e896-552d-4c8c-b9ca-4fc147ffa022")
         .subcategory("Script")
         .description(
             "Evaluates a formula, such as `A + t*(B-A)`, for every item of its inputs. The \
@@ -140,6 +141,7 @@ impl EvaluateState {
 /// Evaluate \[Eval\]: a formula given as the input F, of the other inputs.
 pub fn evaluate() -> NodeType {
     let mut node = NodeType::new(EVALUATE, "Evaluate", "Eval", "Maths")
+        .gh_guid("cc2b626f-6eff-4d08-9829-2877560693f4")
         .subcategory("Script")
         .description(
             "Evaluates a formula given as data: the first input F holds the formula (text), \

@@ -27,6 +27,7 @@ pub fn register(registry: &mut NodeRegistry) {
 /// Range \[Range\]: `N + 1` numbers evenly spaced over a domain, ends included.
 pub fn range() -> NodeType {
     NodeType::new(RANGE, "Range", "Range", "Sets")
+        .gh_guid("9445ca40-cc73-4861-a455-146308676855")
         .subcategory("Sequence")
         .description(
             "Divides a domain into N equal steps and lists the N + 1 numbers from its start to \
@@ -66,6 +67,7 @@ pub fn range() -> NodeType {
 /// Series \[Series\]: `C` numbers from `S` in steps of `N`.
 pub fn series() -> NodeType {
     NodeType::new(SERIES, "Series", "Series", "Sets")
+        .gh_guid("e64c5fb1-845c-4ab1-8911-5f338516ba67")
         .subcategory("Sequence")
         .description("Lists C numbers starting at S and increasing by N each time.")
         .input(

@@ -72,6 +72,7 @@ fn convert_branch(
 /// Box \[Box\]: a container of boxes; other geometry becomes its world bounding box.
 pub fn box_param() -> NodeType {
     NodeType::new(BOX, "Box", "Box", "Params")
+        .gh_guid("c9482db6-bea9-448d-98ff-fed6d69a8efc")
         .subcategory("Geometry")
         .description(&format!(
             "{} Boxes pass as they are; any other geometry (points, lines, circles, arcs, \
@@ -99,6 +100,7 @@ pub fn box_param() -> NodeType {
 /// Brep \[Brep\]: a container of B-reps; boxes and surfaces become B-reps.
 pub fn brep() -> NodeType {
     NodeType::new(BREP, "Brep", "Brep", "Params")
+        .gh_guid("919e146f-30ae-4aae-be34-4d72f555e7da")
         .subcategory("Geometry")
         .description(&format!(
             "{} B-reps (boundary representations: polysurfaces and solids) pass as they are; \
@@ -152,6 +154,7 @@ pub fn is_geometry(value: &Value) -> bool {
 /// Geometry \[Geo\]: a container of any geometry.
 pub fn geometry() -> NodeType {
     NodeType::new(GEOMETRY, "Geometry", "Geo", "Params")
+        .gh_guid("ac2bc2cb-70fb-4dd5-9c78-7e1ea97fe278")
         .subcategory("Geometry")
         .description(&format!(
             "{} Any geometry passes unchanged, keeping its own type: points, vectors, planes, \

@@ -15,6 +15,7 @@ pub fn register(registry: &mut NodeRegistry) {
 /// Curve \[Crv\]: a collection of curves; lines, circles and arcs that flow in become curves.
 pub fn curve() -> NodeType {
     NodeType::new(CURVE, "Curve", "Crv", "Params")
+        .gh_guid("d5967b9f-e8ee-436b-a8ad-29fdcecf32d5")
         .subcategory("Geometry")
         .description(
             "Contains a collection of curves. A parameter passes its data through unchanged \

@@ -55,16 +55,19 @@ fn container(id: &str, name: &str, nickname: &str, data_type: DataType, what: &s
 /// Point \[Pt\]: a container of points.
 pub fn point() -> NodeType {
     container(POINT, "Point", "Pt", DataType::Point, "points")
+        .gh_guid("fbac3e32-f100-4292-8692-77240a42fd1a")
 }
 
 /// Vector \[Vec\]: a container of vectors.
 pub fn vector() -> NodeType {
     container(VECTOR, "Vector", "Vec", DataType::Vector, "vectors")
+        .gh_guid("16ef3e75-e315-4899-b531-d3166b42dac9")
 }
 
 /// Plane \[Pln\]: a container of planes.
 pub fn plane() -> NodeType {
     container(PLANE, "Plane", "Pln", DataType::Plane, "planes")
+        .gh_guid("4f8984c4-7c7a-4d69-b0a2-183cbb330d20")
 }
 
 #[cfg(test)]

@@ -68,6 +68,7 @@ pub fn number() -> NodeType {
         "Contains a collection of floating point numbers.",
         "numbers, integers, booleans (0 or 1), text that reads as a number, or domains",
     )
+    .gh_guid("3e8ca6be-fda8-4aaf-b5c0-3c54c8bb7312")
 }
 
 /// Integer \[Int\]: a collection of whole numbers.
@@ -81,6 +82,7 @@ pub fn integer() -> NodeType {
         "integers, numbers (rounded to the nearest whole number), booleans (0 or 1) or text \
          that reads as a whole number",
     )
+    .gh_guid("2e3ab970-8545-46bb-836c-1c11e5610bce")
 }
 
 /// Boolean \[Bool\]: a collection of booleans.
@@ -93,6 +95,7 @@ pub fn boolean() -> NodeType {
         "Contains a collection of boolean values.",
         "booleans, numbers (0 is false, anything else true) or the text True/False",
     )
+    .gh_guid("cb95db89-6165-43b6-9c41-5702bc5bf137")
 }
 
 /// Text \[Txt\]: a collection of texts.
@@ -105,6 +108,7 @@ pub fn text() -> NodeType {
         "Contains a collection of text fragments.",
         "text, or any value, which is written as text",
     )
+    .gh_guid("3ede854e-c753-40eb-84cb-b48008f14fd4")
 }
 
 /// Domain \[Domain\]: a collection of numeric domains.
@@ -117,6 +121,7 @@ pub fn domain() -> NodeType {
         "Contains a collection of numeric domains.",
         "domains, numbers (x is the domain 0 to x) or text such as \"0 To 10\"",
     )
+    .gh_guid("15b7afe5-d0d0-43e1-b894-34fcfe3be384")
 }
 
 #[cfg(test)]

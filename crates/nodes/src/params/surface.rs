@@ -28,6 +28,7 @@ pub fn surface_from_value(value: &Value) -> Option<Shared<NurbsSurface>> {
 /// Surface \[Srf\]: a collection of surfaces.
 pub fn surface() -> NodeType {
     NodeType::new(SURFACE, "Surface", "Srf", "Params")
+        .gh_guid("deaf8653-5528-4286-807c-3de8b8dad781")
         .subcategory("Geometry")
         .description(
             "Contains a collection of surfaces. A parameter passes its data through unchanged \

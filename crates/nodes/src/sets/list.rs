@@ -61,6 +61,7 @@ fn branch_or_empty<'a>(s: &locus_runtime::Solve<'a>, input: usize) -> std::borro
 /// List Item \[Item\]: the item at an index of a list.
 pub fn list_item() -> NodeType {
     list_node(LIST_ITEM, "List Item", "Item")
+        .gh_guid("59daf374-bc21-4a5e-8282-5504fb7ae9ae")
         .description(
             "Retrieves the item at index i of a list. With Wrap, indices wrap around the list \
              (i = length is the first item again, −1 the last); without, an index outside the \
@@ -101,6 +102,7 @@ pub fn list_item() -> NodeType {
 /// List Length \[Lng\]: the number of items of a list.
 pub fn list_length() -> NodeType {
     list_node(LIST_LENGTH, "List Length", "Lng")
+        .gh_guid("1817fd29-20ae-4503-b542-f0fb651e67d7")
         .description("Counts the items of a list, null items included; an empty list has length 0.")
         .input(list_input("The list to measure, of any type.").optional())
         .output(
@@ -119,6 +121,7 @@ pub fn list_length() -> NodeType {
 /// Reverse List \[Rev\]: the items of a list in reverse order.
 pub fn reverse_list() -> NodeType {
     list_node(REVERSE_LIST, "Reverse List", "Rev")
+        .gh_guid("6ec97ea8-c559-47a2-8d0f-ce80c794d1f4")
         .description("Reverses the order of the items of a list; null items stay in place.")
         .input(list_input("The list to reverse, of any type."))
         .output(list_output("The items of L, last first."))
@@ -133,6 +136,7 @@ pub fn reverse_list() -> NodeType {
 /// Shift List \[Shift\]: the items of a list moved by an offset.
 pub fn shift_list() -> NodeType {
     list_node(SHIFT_LIST, "Shift List", "Shift")
+        .gh_guid("4fdfe351-6c07-47ce-9fb9-be027fb62186")
         .description(
             "Offsets the items of a list: item k of the result is item k + S of L. With Wrap, \
              the items shifted off one end come back at the other, so the list keeps its \
@@ -185,6 +189,8 @@ fn shifted(branch: &Branch, shift: i64, wrap: bool) -> Branch {
 /// Sort List \[Sort\]: a list of keys sorted, and a list of values in the same order.
 pub fn sort_list() -> NodeType {
     list_node(SORT_LIST, "Sort List", "Sort")
+        .gh_guid("6f93d366-919f-4dda-a35e-ba03dd62799b")
+        .gh_guid("cacb2c64-61b5-46db-825d-c61d5d09cc08")
         .description(
             "Sorts a list of keys in ascending order and puts the values A in the same order \
              as their keys. Keys are numbers (integers and booleans count as numbers) or texts \
@@ -341,6 +347,7 @@ fn compare_keys(a: Key<'_>, b: Key<'_>) -> Ordering {
 /// Dispatch \[Dispatch\]: the items of a list split into two lists by a repeating pattern.
 pub fn dispatch() -> NodeType {
     list_node(DISPATCH, "Dispatch", "Dispatch")
+        .gh_guid("d8332545-21b2-4716-96e3-8559a9876e17")
         .description(
             "Sends each item of a list to List A or List B by a pattern of booleans, repeated \
              as often as needed: item k goes to A when pattern item k mod (pattern length) is \

@@ -41,6 +41,7 @@ pub fn longest_list() -> NodeType {
          item (a null last item repeats as null), so the two can be paired item by item. An \
          empty list gives two empty lists.",
     )
+    .gh_guid("8440fd1b-b6e0-4bdb-aa93-4ec295c213e9")
     .solve(|s| {
         let (Some(a), Some(b)) = (s.branch(0), s.branch(1)) else {
             return Ok(());
@@ -71,6 +72,7 @@ pub fn shortest_list() -> NodeType {
          its end, so the two can be paired item by item. An empty list gives two empty \
          lists.",
     )
+    .gh_guid("5a13ec19-e4e9-43da-bf65-f93025fa87ca")
     .solve(|s| {
         let (Some(a), Some(b)) = (s.branch(0), s.branch(1)) else {
             return Ok(());

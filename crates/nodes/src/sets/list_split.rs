@@ -21,6 +21,7 @@ fn list_port(name: &str, nickname: &str, doc: &str) -> Port {
 /// Split List \[Split\]: a list cut in two at an index.
 pub fn split_list() -> NodeType {
     NodeType::new(SPLIT_LIST, "Split List", "Split", "Sets")
+        .gh_guid("9ab93e1a-ebdf-4090-9296-b000cff7b202")
         .subcategory("List")
         .description(
             "Splits a list in two at index i: List A has the items before i, List B the item \
@@ -64,6 +65,7 @@ pub fn split_list() -> NodeType {
 /// Partition List \[Partition\]: a list cut into chunks of given sizes.
 pub fn partition_list() -> NodeType {
     NodeType::new(PARTITION_LIST, "Partition List", "Partition", "Sets")
+        .gh_guid("5a93246d-2595-4c28-bc2d-90657634f92a")
         .subcategory("List")
         .description(
             "Cuts a list into consecutive chunks whose sizes are taken from S in turn, S \

@@ -45,6 +45,7 @@ fn generic_list(name: &str, nickname: &str, doc: &str) -> Port {
 /// Cull Pattern \[Cull\]: the items of a list kept or removed by a repeating pattern.
 pub fn cull_pattern() -> NodeType {
     sequence_node(CULL_PATTERN, "Cull Pattern", "Cull")
+        .gh_guid("008e9a6f-478a-4813-8c8a-546273bc3a6b")
         .description(
             "Removes items from a list by a pattern of booleans, repeated as often as needed: \
              item k is kept when pattern item k mod (pattern length) is true and culled when \
@@ -80,6 +81,7 @@ pub fn cull_pattern() -> NodeType {
 /// Cull Index \[Cull i\]: the items at given indices removed from a list.
 pub fn cull_index() -> NodeType {
     sequence_node(CULL_INDEX, "Cull Index", "Cull i")
+        .gh_guid("501aecbb-c191-4d13-83d6-7ee32445ac50")
         .description(
             "Removes the items at the indices I from a list and keeps the rest in order. With \
              Wrap, indices wrap around the list (−1 is the last item); without, indices outside \
@@ -170,6 +172,7 @@ fn result_length(value: i64, what: &str) -> Result<usize, NodeError> {
 /// Repeat Data \[Repeat\]: a list repeated until it has a given length.
 pub fn repeat_data() -> NodeType {
     sequence_node(REPEAT_DATA, "Repeat Data", "Repeat")
+        .gh_guid("c40dc145-9e36-4a69-ac1a-6d825c654993")
         .description(
             "Repeats a pattern of items until the result has L items: item k of the result is \
              item k mod (pattern length) of D, so the last repetition may be cut short and an L \
@@ -205,6 +208,7 @@ pub fn repeat_data() -> NodeType {
 /// Duplicate Data \[Dup\]: a list duplicated a number of times.
 pub fn duplicate_data() -> NodeType {
     sequence_node(DUPLICATE_DATA, "Duplicate Data", "Dup")
+        .gh_guid("dd8134c0-109b-4012-92be-51d843edfff7")
         .description(
             "Duplicates the items of a list N times. With Order the whole list is repeated \
              ([a, b] twice is [a, b, a, b]); without, each item is repeated in place ([a, a, b, \

@@ -44,6 +44,7 @@ pub fn register(registry: &mut NodeRegistry) {
 /// Merge \[Merge\]: several trees merged branch by branch.
 pub fn merge() -> NodeType {
     tree_node(MERGE, "Merge", "Merge")
+        .gh_guid("3cadddef-1e2b-4c09-9390-0e8f78f7609f")
         .description(
             "Merges data streams into one tree: branches at a path that only one input has are \
              copied, and the items of branches at the same path are joined in input order \
@@ -70,6 +71,7 @@ pub fn merge() -> NodeType {
 /// Entwine \[Entwine\]: several trees side by side, input k under `{0;k}`.
 pub fn entwine() -> NodeType {
     tree_node(ENTWINE, "Entwine", "Entwine")
+        .gh_guid("c9785b8e-2f30-4f90-8ee3-cca710f82402")
         .description(
             "Combines data streams into one tree with a branch per input: the items of input k \
              (in path order) go to branch {0;k}. With the flatten setting off, the structure \
@@ -121,6 +123,7 @@ pub fn entwine() -> NodeType {
 /// Explode Tree \[BANG!\]: each branch of a tree on an output of its own.
 pub fn explode_tree() -> NodeType {
     let mut t = tree_node(EXPLODE_TREE, "Explode Tree", "BANG!")
+        .gh_guid("74cad441-2264-45fe-a57d-85034751208a")
         .description(
             "Extracts the branches of a tree: branch k (in path order) goes, at its path, to \
              output k. The node has two outputs, Grasshopper's default; a tree with more \
@@ -157,6 +160,7 @@ pub fn explode_tree() -> NodeType {
 /// Tree Branch \[Branch\]: the branch of a tree at a path.
 pub fn tree_branch() -> NodeType {
     tree_node(TREE_BRANCH, "Tree Branch", "Branch")
+        .gh_guid("3a710c1e-1809-4e19-8c15-82adce31cd62")
         .description(
             "Retrieves the branch of a tree at path P, keeping its path. A path the tree does \
              not have is an error naming it.",
@@ -183,6 +187,7 @@ fn no_branch(path: &TreePath) -> NodeError {
 /// Tree Item \[Item\]: the item of a tree at a path and index.
 pub fn tree_item() -> NodeType {
     tree_node(TREE_ITEM, "Tree Item", "Item")
+        .gh_guid("c1ec65a3-bda4-4fad-87d0-edf86ed9d81c")
         .description(
             "Retrieves item i of the branch of a tree at path P. With Wrap, indices wrap around \
              the branch; without, an index outside it gives a null and a warning naming it. A \
@@ -229,6 +234,7 @@ pub fn tree_item() -> NodeType {
 /// Tree Statistics \[TStat\]: the paths, branch lengths and branch count of a tree.
 pub fn tree_statistics() -> NodeType {
     tree_node(TREE_STATISTICS, "Tree Statistics", "TStat")
+        .gh_guid("99bee19d-588c-41a0-b9b9-1d00fb03ea1a")
         .description(
             "Lists the paths of a tree in order, the number of items of each branch (nulls \
              included) and the number of branches.",

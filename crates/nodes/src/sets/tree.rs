@@ -57,6 +57,7 @@ pub(crate) fn tree_port(name: &str, nickname: &str, doc: &str) -> Port {
 /// Graft Tree \[Graft\]: every item on a branch of its own.
 pub fn graft_tree() -> NodeType {
     tree_node(GRAFT_TREE, "Graft Tree", "Graft")
+        .gh_guid("87e1d9ef-088b-4d30-9dda-8a7448a17329")
         .description(
             "Grafts a tree: item i of branch {p} moves to a branch {p;i} of its own. Null items \
              get a branch holding the null, and an empty branch {p} becomes an empty {p;0}, so \
@@ -75,6 +76,7 @@ pub fn graft_tree() -> NodeType {
 /// Flatten Tree \[Flatten\]: all items on one branch.
 pub fn flatten_tree() -> NodeType {
     tree_node(FLATTEN_TREE, "Flatten Tree", "Flatten")
+        .gh_guid("f80cfe18-9510-4b89-8301-8e58faf423bb")
         .description(
             "Flattens a tree: all items of all branches, in path order, on one branch at path \
              P. A tree with branches but no items gives one empty branch; a tree without \
@@ -99,6 +101,7 @@ pub fn flatten_tree() -> NodeType {
 /// Simplify Tree \[Simplify\]: the path indices all branches share removed.
 pub fn simplify_tree() -> NodeType {
     tree_node(SIMPLIFY_TREE, "Simplify Tree", "Simplify")
+        .gh_guid("1303da7b-e339-4e65-a051-82c4dce8224d")
         .description(
             "Simplifies a tree by removing the path indices shared by all branches: {0;0;1} \
              {0;0;2} becomes {1} {2}. With Front, only shared indices at the start of the paths \
@@ -127,6 +130,7 @@ pub fn simplify_tree() -> NodeType {
 /// Trim Tree \[Trim\]: the outermost path indices removed, their branches merged.
 pub fn trim_tree() -> NodeType {
     tree_node(TRIM_TREE, "Trim Tree", "Trim")
+        .gh_guid("1177d6ee-3993-4226-9558-52b7fd63e1e3")
         .description(
             "Reduces the depth of a tree by removing the last D indices of every path and \
              merging the branches that then share a path, in path order. A path with D indices \
@@ -197,6 +201,7 @@ pub fn prune_tree() -> NodeType {
 /// Shift Paths \[PShift\]: indices removed from the end or the front of every path.
 pub fn shift_paths() -> NodeType {
     tree_node(SHIFT_PATHS, "Shift Paths", "PShift")
+        .gh_guid("2d61f4e0-47c5-41d6-a41d-6afa96ee63af")
         .description(
             "Shifts the indices of every path: a negative offset removes that many indices from \
              the end ({0;0} {0;1} with −1 gives {0}), a positive one from the front ({0;0} \
@@ -220,6 +225,7 @@ pub fn shift_paths() -> NodeType {
 /// Flip Matrix \[Flip\]: rows and columns of a matrix-like tree swapped.
 pub fn flip_matrix() -> NodeType {
     tree_node(FLIP_MATRIX, "Flip Matrix", "Flip")
+        .gh_guid("41aa4112-9c9b-42f4-847e-503b9d90e4c7")
         .description(
             "Flips a matrix-like tree, whose branches are its rows, by swapping rows and \
              columns: item j of every branch goes, in branch order, to branch j. Shorter rows \

@@ -116,6 +116,7 @@ pub(crate) fn uv_on(
 /// Evaluate Surface \[EvalSrf\]: point, normal, partial derivatives and frame at a `uv`.
 pub fn evaluate_surface() -> NodeType {
     analysis(EVALUATE_SURFACE, "Evaluate Surface", "EvalSrf")
+        .gh_guid("353b206e-bde5-4f02-a913-b3b8a977d4b9")
         .description(
             "Evaluates a surface at a {uv} coordinate: the point, the unit normal, the first \
              partial derivatives along u and v, and the frame (origin at the point, x axis \
@@ -169,6 +170,7 @@ pub fn evaluate_surface() -> NodeType {
 /// Surface Closest Point \[Srf CP\]: the closest point on a surface and its parameters.
 pub fn surface_closest_point() -> NodeType {
     analysis(SURFACE_CLOSEST_POINT, "Surface Closest Point", "Srf CP")
+        .gh_guid("4a9e9a8e-0943-4438-b360-129c30f2bb0f")
         .description(
             "Finds the point of a surface closest to a sample point: the global minimum over \
              the whole (untrimmed) surface, edges, corners and singular points included. Where \

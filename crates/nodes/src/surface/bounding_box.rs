@@ -128,6 +128,8 @@ pub fn box_from_value(value: &Value) -> Result<OrientedBox, NodeError> {
 /// Bounding Box \[BBox\]: the boxes around geometry, per object or for the whole list.
 pub fn bounding_box() -> NodeType {
     surface_node(BOUNDING_BOX, "Bounding Box", "BBox", "Primitive")
+        .gh_guid("0bb3d234-9097-45db-9998-621639c87d3b")
+        .gh_guid("87df35c8-6e1d-4e2a-821a-7c1066714409")
         .description(
             "Solves the bounding boxes of geometry: the smallest boxes aligned with a plane that \
              contain it. Without Union every object gets its own box (one per list item); with \

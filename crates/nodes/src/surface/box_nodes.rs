@@ -78,6 +78,7 @@ pub(crate) fn box_plane(s: &Solve<'_>, input: usize, name: &str) -> Result<Plane
 /// Box 2Pt \[Box\]: the box on a plane between two corner points.
 pub fn box_2pt() -> NodeType {
     surface_node(BOX_2PT, "Box 2Pt", "Box", "Primitive")
+        .gh_guid("2a43ef96-8f87-4892-8b94-237a47e8d3cf")
         .description(
             "Creates a box aligned with a plane from two opposite corners: along each axis of \
              the plane it runs from the smaller to the larger coordinate of the two points. \
@@ -115,6 +116,7 @@ pub fn box_2pt() -> NodeType {
 /// Center Box \[Box\]: the box centred on a plane's origin with given half-sizes.
 pub fn center_box() -> NodeType {
     surface_node(CENTER_BOX, "Center Box", "Box", "Primitive")
+        .gh_guid("28061aae-04fb-4cb5-ac45-16f3b66bc0a4")
         .description(
             "Creates a box centred on the origin of a plane, reaching X, Y and Z units along \
              the plane's axes in both directions, so that its sizes are 2X, 2Y and 2Z. \
@@ -154,6 +156,7 @@ pub fn center_box() -> NodeType {
 /// Domain Box \[Box\]: the box on a plane spanning three domains.
 pub fn domain_box() -> NodeType {
     surface_node(DOMAIN_BOX, "Domain Box", "Box", "Primitive")
+        .gh_guid("79aa7f47-397c-4d3f-9761-aaf421bb7f5f")
         .description(
             "Creates a box from a base plane and a domain along each of its axes, in plane \
              coordinates: the box holds the points base.point_at(x, y, z) with x in X, y in Y \
@@ -199,6 +202,7 @@ pub fn domain_box() -> NodeType {
 /// Box Properties \[BoxProp\]: centre, diagonal, area, volume and degeneracy of a box.
 pub fn box_properties() -> NodeType {
     surface_node(BOX_PROPERTIES, "Box Properties", "BoxProp", "Analysis")
+        .gh_guid("af9cdb9d-9617-4827-bb3c-9efd88c76a70")
         .description(
             "Measures a box: its centre, the diagonal from its first corner to the opposite \
              one, its surface area and volume, and how degenerate it is. Sizes are the \
@@ -245,6 +249,7 @@ pub fn box_properties() -> NodeType {
 /// Deconstruct Box \[DeBox\]: the plane and three domains of a box.
 pub fn deconstruct_box() -> NodeType {
     surface_node(DECONSTRUCT_BOX, "Deconstruct Box", "DeBox", "Analysis")
+        .gh_guid("db7d83b1-2898-4ef9-9be5-4e94b4e2048d")
         .description(
             "Takes a box apart into its plane and its three domains in that plane's \
              coordinates, so that Domain Box on the outputs gives the box back. The plane is \

@@ -74,6 +74,7 @@ pub fn edge_curve(curve: &NurbsCurve) -> Value {
 /// Deconstruct Brep \[DeBrep\]: the faces, edges and vertices of a B-rep.
 pub fn deconstruct_brep() -> NodeType {
     surface_node(DECONSTRUCT_BREP, "Deconstruct Brep", "DeBrep", "Analysis")
+        .gh_guid("8d372bdc-9800-45e9-8a26-6e33c5253e21")
         .description(
             "Takes a B-rep apart into its faces, edges and vertices. Each face comes out as a \
              B-rep of its own (Rhino's ExtractFace), with its trims and holes; edges it shared \
@@ -121,6 +122,7 @@ pub fn deconstruct_brep() -> NodeType {
 /// Brep Edges \[Edges\]: the edges of a B-rep sorted by how many faces meet there.
 pub fn brep_edges() -> NodeType {
     surface_node(BREP_EDGES, "Brep Edges", "Edges", "Analysis")
+        .gh_guid("0148a65d-6f42-414a-9db7-9a9b2eb78437")
         .description(
             "Sorts the edges of a B-rep by how many faces meet at them: naked edges are used \
              by one face (the open border of a surface or polysurface), interior edges by two \
@@ -165,6 +167,7 @@ pub fn brep_edges() -> NodeType {
 /// Brep Join \[Join\]: joins B-reps along coincident edges.
 pub fn brep_join() -> NodeType {
     surface_node(BREP_JOIN, "Brep Join", "Join", "Util")
+        .gh_guid("1addcc85-b04e-46e6-bd4a-6f6c93bf7efd")
         .description(
             "Joins B-reps into polysurfaces where their naked edges coincide (within 0.001 \
              model units, Rhino's default document tolerance): the edges become one edge \

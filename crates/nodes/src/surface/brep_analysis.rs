@@ -59,6 +59,8 @@ fn finite_box(b: &OrientedBox) -> Result<(), NodeError> {
 /// Area \[Area\]: the area and area centroid of geometry.
 pub fn area() -> NodeType {
     surface_node(AREA, "Area", "Area", "Analysis")
+        .gh_guid("2e205f24-9279-47b2-b414-d06dcd0b21a7")
+        .gh_guid("86b28a7e-94d9-4791-8306-e13e10d5f8d5")
         .description(
             "Solves the area of geometry and the centroid of that area: the total area of a \
              B-rep's faces (within their trims) or of a surface, the six sides of a box, or \
@@ -233,6 +235,8 @@ fn curve_plane(samples: &[Point3]) -> Result<Plane, NodeError> {
 /// Volume \[Volume\]: the enclosed volume and volume centroid of closed geometry.
 pub fn volume() -> NodeType {
     surface_node(VOLUME, "Volume", "Volume", "Analysis")
+        .gh_guid("224f7648-5956-4b26-80d9-8d771f3dfd5d")
+        .gh_guid("7c0523e8-79c9-45a2-8777-cf0d46bc5432")
         .description(
             "Solves the volume enclosed by closed geometry and the centroid of that volume: a \
              closed B-rep (a solid, with no naked edges), a closed surface such as a sphere, \

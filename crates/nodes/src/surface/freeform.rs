@@ -38,6 +38,7 @@ pub fn surface_from_points() -> NodeType {
         "SrfGrid",
         "Surface",
     )
+    .gh_guid("4b04a1e1-cddf-405d-a7db-335aaa940541")
     .subcategory("Freeform")
     .description(
         "Creates a NURBS surface from a grid of points given as one list, U Count points \

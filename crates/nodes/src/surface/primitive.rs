@@ -81,6 +81,7 @@ fn valid_plane(plane: &Plane, input: &str) -> Result<Plane, NodeError> {
 /// Sphere \[Sph\]: a spherical surface from a centre plane and a radius.
 pub fn sphere() -> NodeType {
     primitive(SPHERE, "Sphere", "Sph")
+        .gh_guid("dabc854d-f50e-408a-b001-d043c7de151d")
         .description(
             "Creates a spherical surface centred at the origin of the base plane, in Rhino's \
              exact NURBS form (degree 2 × 2, 9 × 5 control points, rational). The plane \
@@ -112,6 +113,7 @@ pub fn sphere() -> NodeType {
 /// Cylinder \[Cyl\]: a cylindrical surface on a base circle, extruded along the plane's normal.
 pub fn cylinder() -> NodeType {
     primitive(CYLINDER, "Cylinder", "Cyl")
+        .gh_guid("0373008a-80ee-45be-887d-ab5a244afc29")
         .description(
             "Creates a cylindrical surface (without caps): the circle of the given radius in the \
              base plane, extruded along the plane's z axis by the length; a negative length \
@@ -147,6 +149,7 @@ pub fn cylinder() -> NodeType {
 /// Cone \[Cone\]: a conical surface on a base circle, with its tip along the plane's normal.
 pub fn cone() -> NodeType {
     primitive(CONE, "Cone", "Cone")
+        .gh_guid("03e331ed-c4d1-4a23-afa2-f57b87d2043c")
         .description(
             "Creates a conical surface (without a cap): the base circle of the given radius \
              lies in the base plane and the tip is at the length along the plane's z axis \
@@ -194,6 +197,7 @@ pub fn cone() -> NodeType {
 /// Plane Surface \[PlaneSrf\]: a rectangle in a plane, from two domains.
 pub fn plane_surface() -> NodeType {
     primitive(PLANE_SURFACE, "Plane Surface", "PlaneSrf")
+        .gh_guid("439a55a5-2f9e-4f66-9de2-32f24fec2ef5")
         .description(
             "Creates a rectangular planar surface: the points of the plane whose x coordinate \
              lies in the X domain and y coordinate in the Y domain. As Rhino's PlaneSurface, \

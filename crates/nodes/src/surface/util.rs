@@ -37,6 +37,7 @@ fn count(n: i64, input: &str) -> Result<usize, NodeError> {
 /// Divide Surface \[SDivide\]: a grid of points, normals and parameters on a surface.
 pub fn divide_surface() -> NodeType {
     NodeType::new(DIVIDE_SURFACE, "Divide Surface", "SDivide", "Surface")
+        .gh_guid("5106bafc-d5d4-4983-83e7-7be3ed07f502")
         .subcategory("Util")
         .description(
             "Divides a surface into a grid of U × V equal steps of its parameter rectangle \
@@ -134,6 +135,7 @@ pub fn divide_surface() -> NodeType {
 /// Iso Curve \[Iso\]: the isocurves of a surface through a `uv`.
 pub fn iso_curve() -> NodeType {
     NodeType::new(ISO_CURVE, "Iso Curve", "Iso", "Surface")
+        .gh_guid("d1d57181-d594-41e8-8efb-041e29f8a5ca")
         .subcategory("Util")
         .description(
             "Extracts the two isocurves of a surface through a {uv} coordinate, as exact NURBS \

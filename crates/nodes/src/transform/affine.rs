@@ -30,6 +30,7 @@ fn affine(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Scale \[Scale\]: a uniform scale about a centre.
 pub fn scale() -> NodeType {
     affine(SCALE, "Scale", "Scale")
+        .gh_guid("4d2a06bd-4b0f-4c65-9ee0-4220e4c01703")
         .description(
             "Scales geometry uniformly about a centre point: P goes to C + F (P − C). A \
              negative factor also turns the geometry through the centre; a zero factor \
@@ -62,6 +63,7 @@ pub fn scale() -> NodeType {
 /// Scale NU \[Scale NU\]: a non-uniform scale along the axes of a plane.
 pub fn scale_nu() -> NodeType {
     affine(SCALE_NU, "Scale NU", "Scale NU")
+        .gh_guid("290f418a-65ee-406a-a9d0-35699815b512")
         .description(
             "Scales geometry by different factors along the x, y and z axes of a plane, about \
              its origin: a point at plane coordinates (u, v, w) goes to (X·u, Y·v, Z·w). \
@@ -145,6 +147,7 @@ pub fn shear() -> NodeType {
 /// Project \[Proj\]: the orthogonal projection onto a plane.
 pub fn project() -> NodeType {
     affine(PROJECT, "Project", "Proj")
+        .gh_guid("23285717-156c-468f-a691-b242488c06a6")
         .description(
             "Projects geometry onto a plane along its normal: every point goes to its closest \
              point of the plane (the book: projecting onto world XY sets z to 0). The matrix \

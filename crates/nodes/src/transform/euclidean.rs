@@ -51,6 +51,7 @@ fn angle_input() -> Port {
 /// Move \[Move\]: a translation by a vector.
 pub fn move_geometry() -> NodeType {
     euclidean(MOVE, "Move", "Move")
+        .gh_guid("e9eb1dcf-92f6-4d4d-84ae-96222d60f56b")
         .description(
             "Translates geometry by a motion vector: every point P goes to P + T. The matrix \
              is the identity with T in its last column. Vectors, having no position, are not \
@@ -73,6 +74,7 @@ pub fn move_geometry() -> NodeType {
 /// Rotate \[Rotate\]: a rotation in a plane, about its normal through its origin.
 pub fn rotate() -> NodeType {
     euclidean(ROTATE, "Rotate", "Rotate")
+        .gh_guid("b7798b74-037e-4f0c-8ac7-dc1043d093e0")
         .description(
             "Rotates geometry in a plane: about the plane's normal through its origin, by an \
              angle in radians, counter-clockwise as seen from above the plane. A NaN angle is \
@@ -127,6 +129,7 @@ pub fn rotate_axis() -> NodeType {
 /// Rotate 3D \[Rot3D\]: a rotation about an axis vector through a centre point.
 pub fn rotate_3d() -> NodeType {
     euclidean(ROTATE_3D, "Rotate 3D", "Rot3D")
+        .gh_guid("3dfb9a77-6e05-4016-9f20-94f78607d672")
         .description(
             "Rotates geometry about an axis through a centre point, by an angle in radians, \
              counter-clockwise seen from the tip of the axis. A zero-length axis is an error.",
@@ -156,6 +159,7 @@ pub fn rotate_3d() -> NodeType {
 /// Mirror \[Mirror\]: a reflection across a plane.
 pub fn mirror() -> NodeType {
     euclidean(MIRROR, "Mirror", "Mirror")
+        .gh_guid("f12daa2f-4fd5-48c1-8ac3-5dea476912ca")
         .description(
             "Mirrors geometry across a plane: every point P goes to P − 2 d n, with d its \
              signed distance from the plane and n the plane's unit normal. Mirroring reverses \
@@ -179,6 +183,7 @@ pub fn mirror() -> NodeType {
 /// Orient \[Orient\]: the motion that takes one plane onto another.
 pub fn orient() -> NodeType {
     euclidean(ORIENT, "Orient", "Orient")
+        .gh_guid("378d0690-9da0-4dd1-ab16-1d15246e7c22")
         .description(
             "Moves geometry from a source plane to a target plane: the source origin goes to \
              the target origin and the source axes onto the target axes, so every point keeps \

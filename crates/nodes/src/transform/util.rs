@@ -45,6 +45,7 @@ fn util(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Transform \[Transform\]: applies a transformation to geometry.
 pub fn transform() -> NodeType {
     util(TRANSFORM, "Transform", "Transform")
+        .gh_guid("610e689b-5adc-47b3-af8f-e3a32b7ea341")
         .description(
             "Applies a transformation matrix to geometry: points, vectors (without the \
              translation), planes, lines, circles, arcs, curves, surfaces and boxes. Circles \
@@ -67,6 +68,7 @@ pub fn transform() -> NodeType {
 /// Compound \[Comp\]: one transformation that does a list of them in order.
 pub fn compound() -> NodeType {
     util(COMPOUND, "Compound", "Comp")
+        .gh_guid("ca80054a-cde0-4f69-a132-10502b24866d")
         .description(
             "Combines a list of transformations into one that applies them in list order, \
              the first first: [M1, M2, M3] gives M3·M2·M1. Null items are skipped with a \

@@ -61,6 +61,7 @@ fn plane_node(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Construct Plane \[Pl\]: a plane from an origin and two axis directions.
 pub fn construct_plane() -> NodeType {
     plane_node(CONSTRUCT_PLANE, "Construct Plane", "Pl")
+        .gh_guid("bc3e379e-7206-4e7b-b63a-ff61f4b38a3e")
         .description(
             "Makes a plane from an origin and {x, y} axis directions. The x axis is the unit \
              X direction; the y axis is the part of the Y direction perpendicular to it, made \
@@ -110,6 +111,7 @@ pub fn plane_3pt() -> NodeType {
 /// Plane Normal \[Pl\]: the plane through a point with a given normal.
 pub fn plane_normal() -> NodeType {
     plane_node(PLANE_NORMAL, "Plane Normal", "Pl")
+        .gh_guid("cfb6b17f-ca82-4f5d-b604-d4f69f569de3")
         .description(
             "Makes the plane through an origin with the given normal (z axis). The x axis is \
              chosen as Rhino chooses it, perpendicular to the normal; a normal along +Z gives \
@@ -155,6 +157,7 @@ pub fn xy_plane() -> NodeType {
         Plane::WORLD_XY,
         "x axis <1, 0, 0>, y axis <0, 1, 0>, normal <0, 0, 1>",
     )
+    .gh_guid("17b7152b-d30d-4d50-b9ef-c9fe25576fc2")
 }
 
 /// YZ Plane \[YZ\]: the world YZ plane through a point.
@@ -166,6 +169,7 @@ pub fn yz_plane() -> NodeType {
         Plane::WORLD_YZ,
         "x axis <0, 1, 0>, y axis <0, 0, 1>, normal <1, 0, 0>",
     )
+    .gh_guid("fad344bc-09b1-4855-a2e6-437ef5715fe3")
 }
 
 /// XZ Plane \[XZ\]: the world XZ plane through a point (normal −Y, see [`WORLD_XZ`]).
@@ -178,11 +182,13 @@ pub fn xz_plane() -> NodeType {
         "x axis <1, 0, 0>, y axis <0, 0, 1>, normal <0, −1, 0> (x × y, as Rhino's Front \
          construction plane)",
     )
+    .gh_guid("8cc3a196-f6a0-49ea-9ed9-0cb343a3ae64")
 }
 
 /// Deconstruct Plane \[DePlane\]: the origin and axes of a plane.
 pub fn deconstruct_plane() -> NodeType {
     plane_node(DECONSTRUCT_PLANE, "Deconstruct Plane", "DePlane")
+        .gh_guid("3cd2949b-4ea8-4ffb-a70c-5c380f9f46ea")
         .description(
             "Splits a plane into its origin and its three unit axes. A plane with a NaN or \
              infinite coordinate is passed on with a warning.",

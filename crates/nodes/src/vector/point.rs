@@ -34,6 +34,7 @@ fn point_node(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Construct Point \[Pt\]: a point from its x, y and z coordinates.
 pub fn construct_point() -> NodeType {
     point_node(CONSTRUCT_POINT, "Construct Point", "Pt")
+        .gh_guid("3581f42a-9592-4549-bd6b-1c0fc39d067b")
         .description(
             "Makes a point from its {x, y, z} coordinates in the world coordinate system. A \
              NaN or infinite coordinate is an error.",
@@ -65,6 +66,7 @@ pub fn construct_point() -> NodeType {
 /// Deconstruct \[pDecon\]: the coordinates of a point.
 pub fn deconstruct_point() -> NodeType {
     point_node(DECONSTRUCT_POINT, "Deconstruct", "pDecon")
+        .gh_guid("9abae6b7-fa1d-448c-9209-4a8155345841")
         .description(
             "Splits a point into its x, y and z coordinates in the world system. A NaN or \
              infinite coordinate is passed on with a warning.",
@@ -95,6 +97,7 @@ pub fn deconstruct_point() -> NodeType {
 /// Distance \[Dist\]: the Euclidean distance between two points.
 pub fn distance() -> NodeType {
     point_node(DISTANCE, "Distance", "Dist")
+        .gh_guid("93b8e93d-f932-402c-b435-84be04d87666")
         .description(
             "Computes the Euclidean distance between two points, \
              √((xB − xA)² + (yB − yA)² + (zB − zA)²).",

@@ -99,6 +99,7 @@ pub fn cross_product() -> NodeType {
 /// Angle \[Angle\]: the angle between two vectors, optionally measured in a plane.
 pub fn angle() -> NodeType {
     vector_node(ANGLE, "Angle", "Angle")
+        .gh_guid("b464fccb-50e7-41bd-9789-8438db9bea9f")
         .description(
             "Computes the angle between two vectors in radians. Without a plane it is the \
              smaller angle, from 0 to π. With a plane, both vectors are projected onto it and \

@@ -48,6 +48,7 @@ fn pull_onto(geometry: &Value, p: Point3) -> Result<Point3, NodeError> {
 /// Pull Point \[Pull\]: a point pulled onto a list of geometry.
 pub fn pull_point() -> NodeType {
     NodeType::new(PULL_POINT, "Pull Point", "Pull", "Vector")
+        .gh_guid("902289da-28dc-454b-98d4-b8f8aa234516")
         .subcategory("Point")
         .description(
             "Pulls a point onto geometry: points, lines, circles, arcs, curves, surfaces, \

@@ -58,6 +58,7 @@ pub(super) fn vector_node(id: &str, name: &str, nickname: &str) -> NodeType {
 /// Vector XYZ \[Vec\]: a vector from its components, and its length.
 pub fn vector_xyz() -> NodeType {
     vector_node(VECTOR_XYZ, "Vector XYZ", "Vec")
+        .gh_guid("56b92eab-d121-43f7-94d3-6cd8f0ddead8")
         .description(
             "Makes a vector from its {x, y, z} components and gives its length \
              √(x² + y² + z²). A NaN or infinite component is an error.",
@@ -96,6 +97,7 @@ pub fn vector_xyz() -> NodeType {
 /// Deconstruct Vector \[DeVec\]: the components of a vector.
 pub fn deconstruct_vector() -> NodeType {
     vector_node(DECONSTRUCT_VECTOR, "Deconstruct Vector", "DeVec")
+        .gh_guid("a50fcd4a-cf42-4c3f-8616-022761e6cc93")
         .description(
             "Splits a vector into its x, y and z components. A NaN or infinite component is \
              passed on with a warning.",
@@ -135,21 +137,25 @@ fn unit_axis(id: &str, name: &str, nickname: &str, axis: Vector3, letter: &str) 
 /// Unit X \[X\]: the world x axis times a factor.
 pub fn unit_x() -> NodeType {
     unit_axis(UNIT_X, "Unit X", "X", Vector3::X, "x")
+        .gh_guid("79f9fbb3-8f1d-4d9a-88a9-f7961b1012cd")
 }
 
 /// Unit Y \[Y\]: the world y axis times a factor.
 pub fn unit_y() -> NodeType {
     unit_axis(UNIT_Y, "Unit Y", "Y", Vector3::Y, "y")
+        .gh_guid("d3d195ea-2d59-4ffa-90b1-8b7ff3369f69")
 }
 
 /// Unit Z \[Z\]: the world z axis times a factor.
 pub fn unit_z() -> NodeType {
     unit_axis(UNIT_Z, "Unit Z", "Z", Vector3::Z, "z")
+        .gh_guid("9103c240-a6a9-4223-9b42-dbd19bf38e2b")
 }
 
 /// Vector 2Pt \[Vec2Pt\]: the vector from point A to point B.
 pub fn vector_2pt() -> NodeType {
     vector_node(VECTOR_2PT, "Vector 2Pt", "Vec2Pt")
+        .gh_guid("934ede4a-924a-4973-bb05-0dc4b36fae75")
         .description(
             "Makes the vector from point A to point B, B − A, optionally of unit length. \
              Unitizing the vector between two coincident points is an error (it has no \
@@ -191,6 +197,7 @@ pub fn vector_2pt() -> NodeType {
 /// Unit Vector \[Unit\]: a vector scaled to length one.
 pub fn unit_vector() -> NodeType {
     vector_node(UNIT_VECTOR, "Unit Vector", "Unit")
+        .gh_guid("d2da1306-259a-4994-85a4-672d8a4c7805")
         .description(
             "Scales a vector to length one, keeping its direction: v / |v|. A zero-length \
              vector has no direction and is an error.",
@@ -206,6 +213,7 @@ pub fn unit_vector() -> NodeType {
 /// Amplitude \[Amp\]: a vector with its length set.
 pub fn amplitude() -> NodeType {
     vector_node(AMPLITUDE, "Amplitude", "Amp")
+        .gh_guid("6ec39468-dae7-4ffa-a766-f2ab22a2c62e")
         .description(
             "Sets the length of a vector, keeping its direction: A · v / |v|. A negative \
              amplitude reverses the vector. A zero-length vector has no direction and is an \
@@ -230,6 +238,7 @@ pub fn amplitude() -> NodeType {
 /// Vector Length \[VLen\]: the length of a vector.
 pub fn vector_length() -> NodeType {
     vector_node(VECTOR_LENGTH, "Vector Length", "VLen")
+        .gh_guid("675e31bf-1775-48d7-bb8d-76b77786dd53")
         .description("Computes the length (magnitude) of a vector, √(x² + y² + z²).")
         .input(Port::new("Vector", "V", DataType::Vector).doc("The vector."))
         .output(
@@ -242,6 +251,7 @@ pub fn vector_length() -> NodeType {
 /// Reverse \[Rev\]: the vector pointing the other way.
 pub fn reverse() -> NodeType {
     vector_node(REVERSE, "Reverse", "Rev")
+        .gh_guid("d5788074-d75d-4021-b1a3-0bf992928584")
         .description("Reverses a vector: −v, the same length in the opposite direction.")
         .input(Port::new("Vector", "V", DataType::Vector).doc("The vector to reverse."))
         .output(Port::new("Vector", "V", DataType::Vector).doc("The reversed vector, −V."))
@@ -251,6 +261,7 @@ pub fn reverse() -> NodeType {
 /// Rotate \[VRot\]: a vector rotated about an axis.
 pub fn rotate() -> NodeType {
     vector_node(ROTATE, "Rotate", "VRot")
+        .gh_guid("b6d7ba20-cf74-4191-a756-2216a36e30a7")
         .description(
             "Rotates a vector about an axis through the origin by an angle in radians, \
              counter-clockwise seen from the tip of the axis (right-hand rule). A zero-length \

@@ -1,0 +1,828 @@
+//! Writing a locus graph as a `.ghx` file (the XML form of a GH_IO archive), with quick-xml.
+//!
+//! Every node becomes an object of the first Grasshopper type GUID its node type declares;
+//! `params.*` nodes become floating parameters, other nodes components with `param_input` /
+//! `param_output` chunks (or `ParameterData` for variable inputs). Values become persistent
+//! data, wires `Source` items, named inputs and outputs `RH_IN:` / `RH_OUT:` groups. Objects
+//! are placed on a layered layout: one column per wire depth, one row per node in a column.
+
+use std::collections::HashMap;
+
+use locus_runtime::{
+    DataType, Graph, GraphNode, Modifier, NodeRegistry, NodeType, Value, parse_literal,
+};
+use quick_xml::Writer;
+use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
+
+/// What an export could not carry over (the file is still written).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExportWarning(pub String);
+
+impl std::fmt::Display for ExportWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// Why a graph cannot be exported at all.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ExportError {
+    /// A node whose type is unknown or has no Grasshopper GUID.
+    #[error("node \"{node}\": {reason}")]
+    Node {
+        /// The node id.
+        node: String,
+        /// Why.
+        reason: String,
+    },
+}
+
+/// A deterministic GUID from a text (FNV-1a, 128 bits), so that exports are reproducible.
+fn guid_of(text: &str) -> String {
+    let mut h: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
+    for b in text.bytes() {
+        h ^= u128::from(b);
+        h = h.wrapping_mul(0x0000_0000_0100_0000_0000_0000_0000_013b);
+    }
+    let x = format!("{h:032x}");
+    format!(
+        "{}-{}-{}-{}-{}",
+        &x[0..8],
+        &x[8..12],
+        &x[12..16],
+        &x[16..20],
+        &x[20..32]
+    )
+}
+
+struct Out {
+    w: Writer<Vec<u8>>,
+}
+
+impl Out {
+    fn start(&mut self, name: &str, attrs: &[(&str, &str)]) {
+        let mut e = BytesStart::new(name);
+        for (k, v) in attrs {
+            e.push_attribute((*k, *v));
+        }
+        let _ = self.w.write_event(Event::Start(e));
+    }
+
+    fn end(&mut self, name: &str) {
+        let _ = self.w.write_event(Event::End(BytesEnd::new(name)));
+    }
+
+    fn text_element(&mut self, name: &str, text: &str) {
+        self.start(name, &[]);
+        let _ = self.w.write_event(Event::Text(BytesText::new(text)));
+        self.end(name);
+    }
+
+    fn item_start(&mut self, name: &str, index: Option<usize>, code: u32) {
+        let type_name = crate::archive::Value::type_name(code).unwrap_or("gh_string");
+        let code = code.to_string();
+        let index = index.map(|i| i.to_string());
+        let mut attrs = vec![("name", name)];
+        if let Some(i) = &index {
+            attrs.push(("index", i));
+        }
+        attrs.push(("type_name", type_name));
+        attrs.push(("type_code", &code));
+        self.start("item", &attrs);
+    }
+
+    fn item(&mut self, name: &str, index: Option<usize>, code: u32, text: &str) {
+        self.item_start(name, index, code);
+        let _ = self.w.write_event(Event::Text(BytesText::new(text)));
+        self.end("item");
+    }
+
+    fn item_parts(&mut self, name: &str, code: u32, parts: &[(&str, String)]) {
+        self.item_start(name, None, code);
+        for (k, v) in parts {
+            self.text_element(k, v);
+        }
+        self.end("item");
+    }
+
+    fn chunk_start(&mut self, name: &str, index: Option<usize>) {
+        let index = index.map(|i| i.to_string());
+        match &index {
+            Some(i) => self.start("chunk", &[("name", name), ("index", i)]),
+            None => self.start("chunk", &[("name", name)]),
+        }
+    }
+}
+
+fn num(x: f64) -> String {
+    // .NET reads "R" round-trip numbers; Rust's shortest form is one of them.
+    if x.is_nan() {
+        "NaN".to_owned()
+    } else if x.is_infinite() {
+        if x > 0.0 { "Infinity" } else { "-Infinity" }.to_owned()
+    } else {
+        format!("{x}")
+    }
+}
+
+/// A section of items, then one of chunks, written by closures (GH_IO writes the counts).
+fn items_and_chunks(
+    out: &mut Out,
+    items: impl FnOnce(&mut Out) -> usize,
+    chunks: impl FnOnce(&mut Out) -> usize,
+) {
+    // Counts are attributes before the content; write into sub-writers to know them first.
+    let mut inner = Out {
+        w: Writer::new_with_indent(Vec::new(), b' ', 2),
+    };
+    let n = items(&mut inner);
+    let items_xml = inner.w.into_inner();
+    let mut inner = Out {
+        w: Writer::new_with_indent(Vec::new(), b' ', 2),
+    };
+    let m = chunks(&mut inner);
+    let chunks_xml = inner.w.into_inner();
+    let n = n.to_string();
+    out.start("items", &[("count", &n)]);
+    let _ = out.w.get_mut().extend_from_slice(&items_xml);
+    out.end("items");
+    if m > 0 {
+        let m = m.to_string();
+        out.start("chunks", &[("count", &m)]);
+        let _ = out.w.get_mut().extend_from_slice(&chunks_xml);
+        out.end("chunks");
+    }
+}
+
+struct Layout {
+    position: HashMap<String, (f32, f32)>,
+}
+
+fn layout(graph: &Graph) -> Layout {
+    let mut depth: HashMap<&str, usize> =
+        graph.nodes.iter().map(|n| (n.id.0.as_str(), 0)).collect();
+    // Longest path from a source, by relaxation (graphs are acyclic; bounded passes).
+    for _ in 0..graph.nodes.len().min(10_000) {
+        let mut changed = false;
+        for w in &graph.wires {
+            let d = depth.get(w.from.node.0.as_str()).copied().unwrap_or(0) + 1;
+            if let Some(t) = depth.get_mut(w.to.node.0.as_str())
+                && *t < d
+            {
+                *t = d;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    let mut rows: HashMap<usize, usize> = HashMap::new();
+    let mut position = HashMap::new();
+    for n in &graph.nodes {
+        let d = depth.get(n.id.0.as_str()).copied().unwrap_or(0);
+        let row = rows.entry(d).or_insert(0);
+        position.insert(n.id.0.clone(), (d as f32 * 220.0, *row as f32 * 90.0));
+        *row += 1;
+    }
+    Layout { position }
+}
+
+struct Ports<'a> {
+    node: &'a GraphNode,
+    node_type: &'a NodeType,
+    inputs: Vec<locus_runtime::Port>,
+}
+
+fn input_guid(node: &str, port: &str) -> String {
+    guid_of(&format!("{node}\u{0}in\u{0}{port}"))
+}
+
+fn output_guid(node: &str, port: &str) -> String {
+    guid_of(&format!("{node}\u{0}out\u{0}{port}"))
+}
+
+fn object_guid(node: &str) -> String {
+    guid_of(&format!("{node}\u{0}object"))
+}
+
+/// Writes a graph as `.ghx` text; what cannot be carried over is returned as warnings.
+pub fn export_ghx(
+    graph: &Graph,
+    registry: &NodeRegistry,
+) -> Result<(String, Vec<ExportWarning>), ExportError> {
+    let mut warnings = Vec::new();
+    let mut nodes = Vec::new();
+    for n in &graph.nodes {
+        let t = registry
+            .get(&n.node_type)
+            .ok_or_else(|| ExportError::Node {
+                node: n.id.0.clone(),
+                reason: format!("unknown node type {}", n.node_type),
+            })?;
+        if t.gh_guids.is_empty() {
+            return Err(ExportError::Node {
+                node: n.id.0.clone(),
+                reason: format!("the node type {} has no Grasshopper counterpart", t.id),
+            });
+        }
+        if n.matching != locus_runtime::Matching::Longest {
+            warnings.push(ExportWarning(format!(
+                "node \"{}\": Grasshopper components always match by longest list; the matching is not written",
+                n.id
+            )));
+        }
+        let inputs = t.resolve_inputs(n.input_names.as_deref());
+        nodes.push(Ports {
+            node: n,
+            node_type: t,
+            inputs,
+        });
+    }
+    let port_nick = |p: &Ports<'_>, name: &str, input: bool| -> String {
+        let list = if input {
+            &p.inputs
+        } else {
+            &p.node_type.outputs
+        };
+        list.iter()
+            .find(|q| q.is_named(name))
+            .map(|q| q.nickname.clone())
+            .unwrap_or_else(|| name.to_owned())
+    };
+    let by_id: HashMap<&str, &Ports<'_>> =
+        nodes.iter().map(|p| (p.node.id.0.as_str(), p)).collect();
+    // Sources per input, in wire order.
+    let mut sources: HashMap<(String, String), Vec<String>> = HashMap::new();
+    for w in &graph.wires {
+        let (Some(from), Some(to)) = (
+            by_id.get(w.from.node.0.as_str()),
+            by_id.get(w.to.node.0.as_str()),
+        ) else {
+            continue;
+        };
+        let from_port = port_nick(from, &w.from.port, false);
+        let to_port = port_nick(to, &w.to.port, true);
+        let guid = if is_param(from.node_type) {
+            object_guid(&from.node.id.0)
+        } else {
+            output_guid(&from.node.id.0, &from_port)
+        };
+        sources
+            .entry((w.to.node.0.clone(), to_port))
+            .or_default()
+            .push(guid);
+    }
+    let layout = layout(graph);
+    let mut out = Out {
+        w: Writer::new_with_indent(Vec::new(), b' ', 2),
+    };
+    let _ = out.w.write_event(Event::Decl(BytesDecl::new(
+        "1.0",
+        Some("utf-8"),
+        Some("yes"),
+    )));
+    out.start("Archive", &[("name", "Root")]);
+    let _ = out.w.write_event(Event::Comment(BytesText::new(
+        "Grasshopper archive written by locus export-ghx",
+    )));
+    items_and_chunks(
+        &mut out,
+        |o| {
+            o.item_parts(
+                "ArchiveVersion",
+                80,
+                &[
+                    ("Major", "0".into()),
+                    ("Minor", "2".into()),
+                    ("Revision", "2".into()),
+                ],
+            );
+            1
+        },
+        |o| {
+            o.chunk_start("Definition", None);
+            items_and_chunks(
+                o,
+                |o| {
+                    o.item_parts(
+                        "plugin_version",
+                        80,
+                        &[
+                            ("Major", "1".into()),
+                            ("Minor", "0".into()),
+                            ("Revision", "7".into()),
+                        ],
+                    );
+                    1
+                },
+                |o| {
+                    o.chunk_start("DocumentHeader", None);
+                    items_and_chunks(
+                        o,
+                        |o| {
+                            o.item("DocumentID", None, 9, &guid_of(&graph.name));
+                            1
+                        },
+                        |_| 0,
+                    );
+                    o.end("chunk");
+                    o.chunk_start("DefinitionProperties", None);
+                    items_and_chunks(
+                        o,
+                        |o| {
+                            o.item("Description", None, 10, &graph.description);
+                            o.item("Name", None, 10, &graph.name);
+                            2
+                        },
+                        |_| 0,
+                    );
+                    o.end("chunk");
+                    o.chunk_start("GHALibraries", None);
+                    items_and_chunks(
+                        o,
+                        |o| {
+                            o.item("Count", None, 3, "0");
+                            1
+                        },
+                        |_| 0,
+                    );
+                    o.end("chunk");
+                    o.chunk_start("DefinitionObjects", None);
+                    let groups = groups(graph, &by_id, &port_nick);
+                    let total = nodes.len() + groups.len();
+                    items_and_chunks(
+                        o,
+                        |o| {
+                            o.item("ObjectCount", None, 3, &total.to_string());
+                            1
+                        },
+                        |o| {
+                            for (k, p) in nodes.iter().enumerate() {
+                                let pos = layout
+                                    .position
+                                    .get(&p.node.id.0)
+                                    .copied()
+                                    .unwrap_or_default();
+                                write_object(o, k, p, &sources, pos, &mut warnings);
+                            }
+                            for (k, (nick, ids)) in groups.iter().enumerate() {
+                                write_group(o, nodes.len() + k, nick, ids);
+                            }
+                            total
+                        },
+                    );
+                    o.end("chunk");
+                    4
+                },
+            );
+            o.end("chunk");
+            1
+        },
+    );
+    out.end("Archive");
+    let text = String::from_utf8(out.w.into_inner()).unwrap_or_default();
+    Ok((text, warnings))
+}
+
+fn is_param(t: &NodeType) -> bool {
+    t.id.starts_with("params.") && t.inputs.len() == 1 && t.outputs.len() == 1
+}
+
+/// `RH_IN:` and `RH_OUT:` groups: their nickname and the GUIDs they hold (a floating
+/// parameter's object, or a component's port).
+fn groups(
+    graph: &Graph,
+    by_id: &HashMap<&str, &Ports<'_>>,
+    port_nick: &dyn Fn(&Ports<'_>, &str, bool) -> String,
+) -> Vec<(String, Vec<String>)> {
+    let mut groups = Vec::new();
+    for i in &graph.inputs {
+        if let Some(p) = by_id.get(i.target.node.0.as_str()) {
+            let port = port_nick(p, &i.target.port, true);
+            let id = if is_param(p.node_type) {
+                object_guid(&p.node.id.0)
+            } else {
+                input_guid(&p.node.id.0, &port)
+            };
+            groups.push((format!("RH_IN:{}", i.name), vec![id]));
+        }
+    }
+    for o in &graph.outputs {
+        if let Some(p) = by_id.get(o.source.node.0.as_str()) {
+            let port = port_nick(p, &o.source.port, false);
+            let id = if is_param(p.node_type) {
+                object_guid(&p.node.id.0)
+            } else {
+                output_guid(&p.node.id.0, &port)
+            };
+            groups.push((format!("RH_OUT:{}", o.name), vec![id]));
+        }
+    }
+    groups
+}
+
+fn write_group(o: &mut Out, index: usize, nick: &str, ids: &[String]) {
+    o.chunk_start("Object", Some(index));
+    items_and_chunks(
+        o,
+        |o| {
+            o.item("GUID", None, 9, crate::known::GROUP);
+            o.item("Name", None, 10, "Group");
+            2
+        },
+        |o| {
+            o.chunk_start("Container", None);
+            items_and_chunks(
+                o,
+                |o| {
+                    for (k, id) in ids.iter().enumerate() {
+                        o.item("ID", Some(k), 9, id);
+                    }
+                    o.item("ID_Count", None, 3, &ids.len().to_string());
+                    o.item(
+                        "InstanceGuid",
+                        None,
+                        9,
+                        &guid_of(&format!("group\u{0}{nick}")),
+                    );
+                    o.item("Name", None, 10, "Group");
+                    o.item("NickName", None, 10, nick);
+                    ids.len() + 4
+                },
+                |_| 0,
+            );
+            o.end("chunk");
+            1
+        },
+    );
+    o.end("chunk");
+}
+
+fn attributes(o: &mut Out, (x, y): (f32, f32)) {
+    o.chunk_start("Attributes", None);
+    items_and_chunks(
+        o,
+        |o| {
+            o.item_parts(
+                "Bounds",
+                35,
+                &[
+                    ("X", num(f64::from(x))),
+                    ("Y", num(f64::from(y))),
+                    ("W", "120".into()),
+                    ("H", "60".into()),
+                ],
+            );
+            o.item_parts(
+                "Pivot",
+                31,
+                &[("X", num(f64::from(x))), ("Y", num(f64::from(y)))],
+            );
+            2
+        },
+        |_| 0,
+    );
+    o.end("chunk");
+}
+
+fn write_object(
+    o: &mut Out,
+    index: usize,
+    p: &Ports<'_>,
+    sources: &HashMap<(String, String), Vec<String>>,
+    pos: (f32, f32),
+    warnings: &mut Vec<ExportWarning>,
+) {
+    let id = &p.node.id.0;
+    o.chunk_start("Object", Some(index));
+    items_and_chunks(
+        o,
+        |o| {
+            o.item("GUID", None, 9, &p.node_type.gh_guids[0]);
+            o.item("Name", None, 10, &p.node_type.name);
+            2
+        },
+        |o| {
+            o.chunk_start("Container", None);
+            if is_param(p.node_type) {
+                let port = &p.inputs[0];
+                let srcs = sources.get(&(id.clone(), port.nickname.clone()));
+                let (xml, n, persistent) =
+                    param_items(p, port, &object_guid(id), id, srcs, warnings);
+                items_and_chunks(
+                    o,
+                    |o| {
+                        o.w.get_mut().extend_from_slice(&xml);
+                        n
+                    },
+                    |o| {
+                        attributes(o, pos);
+                        if let Some(f) = persistent {
+                            f(o);
+                            2
+                        } else {
+                            1
+                        }
+                    },
+                );
+            } else {
+                let variable = p.node_type.variable_inputs.is_some();
+                items_and_chunks(
+                    o,
+                    |o| {
+                        let mut n = 0;
+                        if let Some((_, lit)) =
+                            p.node.settings.iter().find(|(k, _)| k == "expression")
+                            && let Ok(tree) = parse_literal(&lit.0, DataType::Text)
+                            && let Some(Some(Value::Text(t))) = tree.values().next()
+                        {
+                            o.item("Expression", None, 10, &t);
+                            n += 1;
+                        }
+                        o.item("InstanceGuid", None, 9, &object_guid(id));
+                        o.item("Name", None, 10, &p.node_type.name);
+                        o.item("NickName", None, 10, id);
+                        n += 3;
+                        if p.node.disabled {
+                            o.item("Locked", None, 1, "true");
+                            n += 1;
+                        }
+                        n
+                    },
+                    |o| {
+                        attributes(o, pos);
+                        let mut chunks = 1;
+                        let write_ports =
+                            |o: &mut Out,
+                             in_name: &str,
+                             out_name: &str,
+                             warnings: &mut Vec<ExportWarning>| {
+                                for (k, port) in p.inputs.iter().enumerate() {
+                                    o.chunk_start(in_name, Some(k));
+                                    let srcs = sources.get(&(id.clone(), port.nickname.clone()));
+                                    let guid = input_guid(id, &port.nickname);
+                                    let (xml, n, persistent) =
+                                        param_items(p, port, &guid, &port.nickname, srcs, warnings);
+                                    items_and_chunks(
+                                        o,
+                                        |o| {
+                                            o.w.get_mut().extend_from_slice(&xml);
+                                            n
+                                        },
+                                        |o| {
+                                            if let Some(f) = persistent {
+                                                f(o);
+                                                1
+                                            } else {
+                                                0
+                                            }
+                                        },
+                                    );
+                                    o.end("chunk");
+                                }
+                                for (k, port) in p.node_type.outputs.iter().enumerate() {
+                                    o.chunk_start(out_name, Some(k));
+                                    items_and_chunks(
+                                        o,
+                                        |o| {
+                                            o.item(
+                                                "InstanceGuid",
+                                                None,
+                                                9,
+                                                &output_guid(id, &port.nickname),
+                                            );
+                                            o.item("Name", None, 10, &port.name);
+                                            o.item("NickName", None, 10, &port.nickname);
+                                            o.item("SourceCount", None, 3, "0");
+                                            4
+                                        },
+                                        |_| 0,
+                                    );
+                                    o.end("chunk");
+                                }
+                            };
+                        if variable {
+                            o.chunk_start("ParameterData", None);
+                            items_and_chunks(
+                                o,
+                                |o| {
+                                    o.item("InputCount", None, 3, &p.inputs.len().to_string());
+                                    o.item(
+                                        "OutputCount",
+                                        None,
+                                        3,
+                                        &p.node_type.outputs.len().to_string(),
+                                    );
+                                    2
+                                },
+                                |o| {
+                                    write_ports(o, "InputParam", "OutputParam", warnings);
+                                    p.inputs.len() + p.node_type.outputs.len()
+                                },
+                            );
+                            o.end("chunk");
+                            chunks += 1;
+                        } else {
+                            write_ports(o, "param_input", "param_output", warnings);
+                            chunks += p.inputs.len() + p.node_type.outputs.len();
+                        }
+                        chunks
+                    },
+                );
+            }
+            o.end("chunk");
+            1
+        },
+    );
+    o.end("chunk");
+}
+
+type ChunkWriter<'a> = Box<dyn FnOnce(&mut Out) + 'a>;
+
+/// The items of one parameter (floating or a component's port), and its persistent data
+/// chunk when it has a value.
+fn param_items<'a>(
+    p: &Ports<'_>,
+    port: &locus_runtime::Port,
+    guid: &str,
+    nickname: &str,
+    srcs: Option<&Vec<String>>,
+    warnings: &mut Vec<ExportWarning>,
+) -> (Vec<u8>, usize, Option<ChunkWriter<'a>>) {
+    let mut buffer = Out {
+        w: Writer::new_with_indent(Vec::new(), b' ', 2),
+    };
+    let o = &mut buffer;
+    let mut n = 0;
+    o.item("InstanceGuid", None, 9, guid);
+    o.item("Name", None, 10, &port.name);
+    o.item("NickName", None, 10, nickname);
+    n += 3;
+    if p.node.disabled && is_param(p.node_type) {
+        o.item("Locked", None, 1, "true");
+        n += 1;
+    }
+    let modifiers = p
+        .node
+        .modifiers
+        .iter()
+        .find(|(k, _)| port.is_named(k))
+        .map(|(_, m)| m.clone())
+        .unwrap_or_default();
+    for m in &modifiers {
+        match m {
+            Modifier::Flatten => o.item("Mapping", None, 3, "1"),
+            Modifier::Graft => o.item("Mapping", None, 3, "2"),
+            Modifier::Simplify => o.item("SimplifyData", None, 1, "true"),
+            Modifier::Reverse => o.item("ReverseData", None, 1, "true"),
+            Modifier::Invert => o.item("InvertBooleans", None, 1, "true"),
+            Modifier::Degrees => o.item("UseDegrees", None, 1, "true"),
+            Modifier::Reparameterize => o.item("Reparameterize", None, 1, "true"),
+            Modifier::Principal => {
+                warnings.push(ExportWarning(format!(
+                    "node \"{}\" input {}: the principal modifier is not written",
+                    p.node.id, port.nickname
+                )));
+                continue;
+            }
+        }
+        n += 1;
+    }
+    let srcs = srcs.cloned().unwrap_or_default();
+    for (k, s) in srcs.iter().enumerate() {
+        o.item("Source", Some(k), 9, s);
+    }
+    o.item("SourceCount", None, 3, &srcs.len().to_string());
+    n += srcs.len() + 1;
+    let value = p.node.values.iter().find(|(k, _)| port.is_named(k));
+    let persistent: Option<ChunkWriter<'a>> = match value {
+        Some((_, lit)) if srcs.is_empty() => match parse_literal(&lit.0, port.data_type) {
+            Ok(tree) => {
+                let mut branches = Vec::new();
+                for (path, branch) in tree.branches() {
+                    let mut items = Vec::new();
+                    for v in branch.values().flatten() {
+                        match item_xml(&v) {
+                            Some(x) => items.push(x),
+                            None => warnings.push(ExportWarning(format!(
+                                "node \"{}\" input {}: a {} value is not written",
+                                p.node.id,
+                                port.nickname,
+                                v.data_type().name()
+                            ))),
+                        }
+                    }
+                    branches.push((path.to_string(), items));
+                }
+                Some(Box::new(move |o: &mut Out| write_persistent(o, &branches)))
+            }
+            Err(e) => {
+                warnings.push(ExportWarning(format!(
+                    "node \"{}\" input {}: the value does not read: {e}",
+                    p.node.id, port.nickname
+                )));
+                None
+            }
+        },
+        _ => None,
+    };
+    (buffer.w.into_inner(), n, persistent)
+}
+
+/// One persistent item: its item name, type code and parts (or text).
+type ItemXml = (
+    &'static str,
+    u32,
+    Vec<(&'static str, String)>,
+    Option<String>,
+);
+
+fn item_xml(v: &Value) -> Option<ItemXml> {
+    Some(match v {
+        Value::Number(x) => ("number", 6, vec![], Some(num(*x))),
+        Value::Integer(i) => ("number", 3, vec![], Some(i.to_string())),
+        Value::Boolean(b) => ("boolean", 1, vec![], Some(b.to_string())),
+        Value::Text(t) => ("string", 10, vec![], Some(t.clone())),
+        Value::Point(p) => (
+            "Coordinate",
+            51,
+            vec![("X", num(p.x)), ("Y", num(p.y)), ("Z", num(p.z))],
+            None,
+        ),
+        Value::Vector(p) => (
+            "vector",
+            51,
+            vec![("X", num(p.x)), ("Y", num(p.y)), ("Z", num(p.z))],
+            None,
+        ),
+        Value::Domain(d) => (
+            "Interval",
+            60,
+            vec![("A", num(d.t0)), ("B", num(d.t1))],
+            None,
+        ),
+        Value::Plane(pl) => (
+            "plane",
+            72,
+            vec![
+                ("Ox", num(pl.origin.x)),
+                ("Oy", num(pl.origin.y)),
+                ("Oz", num(pl.origin.z)),
+                ("Xx", num(pl.x_axis.x)),
+                ("Xy", num(pl.x_axis.y)),
+                ("Xz", num(pl.x_axis.z)),
+                ("Yx", num(pl.y_axis.x)),
+                ("Yy", num(pl.y_axis.y)),
+                ("Yz", num(pl.y_axis.z)),
+            ],
+            None,
+        ),
+        _ => return None,
+    })
+}
+
+fn write_persistent(o: &mut Out, branches: &[(String, Vec<ItemXml>)]) {
+    o.chunk_start("PersistentData", None);
+    items_and_chunks(
+        o,
+        |o| {
+            o.item("Count", None, 3, &branches.len().to_string());
+            1
+        },
+        |o| {
+            for (b, (path, items)) in branches.iter().enumerate() {
+                o.chunk_start("Branch", Some(b));
+                items_and_chunks(
+                    o,
+                    |o| {
+                        o.item("Count", None, 3, &items.len().to_string());
+                        o.item("Path", None, 10, path);
+                        2
+                    },
+                    |o| {
+                        for (k, (name, code, parts, text)) in items.iter().enumerate() {
+                            o.chunk_start("Item", Some(k));
+                            items_and_chunks(
+                                o,
+                                |o| {
+                                    match text {
+                                        Some(t) => o.item(name, None, *code, t),
+                                        None => o.item_parts(name, *code, parts),
+                                    }
+                                    1
+                                },
+                                |_| 0,
+                            );
+                            o.end("chunk");
+                        }
+                        items.len()
+                    },
+                );
+                o.end("chunk");
+            }
+            branches.len()
+        },
+    );
+    o.end("chunk");
+}

@@ -1,0 +1,1086 @@
+//! Mapping a Grasshopper definition onto a locus [`Graph`] through the registry, by type GUID.
+//!
+//! Components and parameters become nodes of the type that declares their GUID; ports are
+//! matched by index and their names checked. Widgets become parameter nodes with their
+//! values, pass-through parameters are joined across, display-only objects are dropped, and
+//! everything else (scripts, plugins, Hops calls, components without a node) is reported while
+//! the rest of the definition is still mapped. Clusters are flattened: their objects become
+//! nodes whose ids start with the cluster's path (`cluster-nick/inner-id`).
+
+use std::collections::{HashMap, HashSet};
+
+use locus_runtime::{
+    DataType, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal, Modifier, NodeId,
+    NodeRegistry, NodeType, PortRef, Wire,
+};
+
+use crate::document::{GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree, read_cluster};
+use crate::known::{GROUP, Special, special};
+use crate::limits::Limits;
+use crate::literal;
+use crate::report::{ImportDiagnostic, ObjectRef, Outcome, Report};
+
+/// The Cluster Input object inside a cluster document.
+const CLUSTER_INPUT: &str = "448de216-7d2b-4e83-8ebf-e6ed0e6a4e0e";
+/// The Cluster Output object inside a cluster document.
+const CLUSTER_OUTPUT: &str = "a4b285fe-7c4c-4bd1-9a6a-11ed7b2f1b44";
+
+/// A definition mapped onto a graph.
+#[derive(Clone, Debug, Default)]
+pub struct Import {
+    /// The graph (check it with the same registry before running).
+    pub graph: Graph,
+    /// What became of every object, and the diagnostics.
+    pub report: Report,
+    /// A comment per node: the Grasshopper object it comes from (for the RON writer).
+    pub notes: Vec<(NodeId, String)>,
+}
+
+/// Where the data of a Grasshopper output (or floating parameter) comes from in the graph.
+#[derive(Clone, Debug)]
+enum Source {
+    /// An output port of a node.
+    Port(PortRef),
+    /// A pass-through parameter: the data of its own sources.
+    Through(Vec<String>),
+    /// An object that does not run: the message for its receivers.
+    Missing(String),
+}
+
+struct Mapper<'a> {
+    registry: &'a NodeRegistry,
+    limits: &'a Limits,
+    graph: Graph,
+    report: Report,
+    notes: Vec<(NodeId, String)>,
+    ids: HashSet<String>,
+    /// Output instance GUID → where its data is.
+    sources: HashMap<String, Source>,
+    /// Object instance GUID → node (for groups).
+    nodes_by_object: HashMap<String, NodeId>,
+    /// Node id → index in `graph.nodes`.
+    node_pos: HashMap<NodeId, usize>,
+    /// Input parameter instance GUID → input port (for groups that name a port).
+    input_ports: HashMap<String, PortRef>,
+    /// Inputs to wire once every object is known.
+    pending: Vec<PendingInput>,
+    /// Named inputs and outputs, in the order found.
+    inputs: Vec<(String, PortRef)>,
+    outputs: Vec<(String, PortRef)>,
+    /// Fed panels: their name and sources, for named outputs.
+    panels: Vec<(String, Vec<String>)>,
+    libraries: Vec<crate::document::Library>,
+}
+
+struct PendingInput {
+    node: NodeId,
+    port: String,
+    sources: Vec<String>,
+    object: ObjectRef,
+}
+
+/// Maps a definition onto a graph.
+pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limits) -> Import {
+    let mut m = Mapper {
+        registry,
+        limits,
+        graph: Graph {
+            format: locus_runtime::FORMAT_VERSION,
+            name: doc
+                .name
+                .trim_end_matches(".ghx")
+                .trim_end_matches(".gh")
+                .to_owned(),
+            description: doc.description.clone(),
+            ..Graph::default()
+        },
+        report: Report::default(),
+        notes: Vec::new(),
+        ids: HashSet::new(),
+        sources: HashMap::new(),
+        nodes_by_object: HashMap::new(),
+        input_ports: HashMap::new(),
+        node_pos: HashMap::new(),
+        pending: Vec::new(),
+        inputs: Vec::new(),
+        outputs: Vec::new(),
+        panels: Vec::new(),
+        libraries: doc.libraries.clone(),
+    };
+    m.objects(doc, "", 0);
+    m.groups(doc);
+    m.wire();
+    m.finish()
+}
+
+fn object_ref(o: &GhObject, cluster: &str) -> ObjectRef {
+    ObjectRef {
+        type_name: o.type_name.clone(),
+        name: o.name.clone(),
+        nickname: o.nickname.clone(),
+        instance: o.instance.clone(),
+        type_guid: o.type_guid.clone(),
+        cluster: cluster.to_owned(),
+    }
+}
+
+/// A node id from a nickname: lower case, runs of anything but letters, digits, `-` and `_`
+/// as one `_`.
+fn slug(text: &str) -> String {
+    let mut out = String::new();
+    for c in text.chars() {
+        if c.is_alphanumeric() || c == '-' || c == '/' {
+            out.extend(c.to_lowercase());
+        } else if !out.ends_with('_') {
+            out.push('_');
+        }
+    }
+    out.trim_matches('_').to_owned()
+}
+
+fn is_script(o: &GhObject) -> bool {
+    let c = &o.container;
+    ["CodeInput", "ScriptSource", "AdditionalSource"]
+        .iter()
+        .any(|n| c.item(n).is_some())
+        || c.chunk("Script").is_some()
+}
+
+impl Mapper<'_> {
+    fn diag(
+        &mut self,
+        severity: Level,
+        code: &'static str,
+        message: String,
+        object: Option<ObjectRef>,
+        node: Option<NodeId>,
+        port: Option<String>,
+    ) {
+        self.report.diagnostics.push(ImportDiagnostic {
+            severity,
+            code,
+            message,
+            object,
+            node,
+            port,
+        });
+    }
+
+    fn unique_id(&mut self, prefix: &str, base: &str) -> NodeId {
+        let base = if base.is_empty() { "node" } else { base };
+        let mut id = format!("{prefix}{base}");
+        let mut k = 2;
+        while self.ids.contains(&id) {
+            id = format!("{prefix}{base}_{k}");
+            k += 1;
+        }
+        self.ids.insert(id.clone());
+        NodeId(id)
+    }
+
+    fn objects(&mut self, doc: &GhDocument, cluster: &str, depth: usize) {
+        for o in &doc.objects {
+            self.object(o, cluster, depth);
+        }
+    }
+
+    fn mark_missing(&mut self, o: &GhObject, why: &str) {
+        for p in &o.outputs {
+            self.sources
+                .insert(p.instance.clone(), Source::Missing(why.to_owned()));
+        }
+    }
+
+    fn unsupported(&mut self, o: &GhObject, r: ObjectRef, kind: &'static str, reason: String) {
+        let code = match kind {
+            "script" => "unsupported-script",
+            "plugin" => "unsupported-plugin",
+            "cluster" => "unsupported-cluster",
+            "hops" => "unsupported-hops",
+            _ => "unsupported-component",
+        };
+        self.diag(
+            Level::Error,
+            code,
+            format!(
+                "{r} (name \"{}\", instance {}, type {}) cannot run: {reason}",
+                o.name, o.instance, o.type_guid
+            ),
+            Some(r.clone()),
+            None,
+            None,
+        );
+        self.mark_missing(o, &format!("no data from {r}"));
+        self.report.objects.push((r, Outcome::Unsupported(kind)));
+    }
+
+    fn object(&mut self, o: &GhObject, cluster: &str, depth: usize) {
+        let r = object_ref(o, cluster);
+        let prefix = if cluster.is_empty() {
+            String::new()
+        } else {
+            format!("{cluster}/")
+        };
+        if let Some(node_type) = self.registry.by_gh_guid(&o.type_guid) {
+            let node_type = node_type.clone();
+            self.component(o, r, &node_type, &prefix);
+            return;
+        }
+        match special(&o.type_guid) {
+            Some(Special::Furniture) => {
+                self.report.objects.push((r, Outcome::Ignored));
+            }
+            Some(Special::Display) => {
+                self.diag(
+                    Level::Remark,
+                    "dropped-display",
+                    format!("{r} only shows data in Grasshopper's viewport or canvas: dropped"),
+                    Some(r.clone()),
+                    None,
+                    None,
+                );
+                self.mark_missing(o, &format!("no data from {r} (display only, dropped)"));
+                self.report.objects.push((r, Outcome::Dropped));
+            }
+            Some(Special::PassThrough) => self.pass_through(o, r, &prefix),
+            Some(
+                s @ (Special::Slider
+                | Special::Panel
+                | Special::Toggle
+                | Special::Button
+                | Special::ValueList),
+            ) => self.widget(o, r, s, &prefix),
+            Some(Special::HopsGet(node_type)) => match self.registry.get(node_type).cloned() {
+                Some(t) => {
+                    let name = if o.nickname.is_empty() {
+                        o.name.clone()
+                    } else {
+                        o.nickname.clone()
+                    };
+                    if let Some(id) = self.component(o, r, &t, &prefix) {
+                        let port = t.inputs[0].nickname.clone();
+                        self.inputs.push((name, PortRef { node: id, port }));
+                    }
+                }
+                None => self.unsupported(
+                    o,
+                    r,
+                    "hops",
+                    format!("the node type {node_type} is not in the registry"),
+                ),
+            },
+            Some(Special::HopsCall) => self.unsupported(
+                o,
+                r,
+                "hops",
+                "Hops calls a remote definition, which a headless run does not do".to_owned(),
+            ),
+            Some(Special::Cluster) => self.cluster(o, r, &prefix, depth),
+            None => {
+                if is_script(o) {
+                    self.unsupported(
+                        o,
+                        r,
+                        "script",
+                        "script components (GhPython, C#, VB) do not run in locus".to_owned(),
+                    );
+                } else if let Some(lib) = &o.library {
+                    let plugin = self
+                        .libraries
+                        .iter()
+                        .find(|l| l.id.eq_ignore_ascii_case(lib))
+                        .map(|l| {
+                            if l.author.is_empty() {
+                                format!("plugin {} {}", l.name, l.version)
+                            } else {
+                                format!("plugin {} {} by {}", l.name, l.version, l.author)
+                            }
+                        })
+                        .unwrap_or_else(|| format!("plugin library {lib}"));
+                    self.unsupported(o, r, "plugin", format!("it comes from the {plugin}"));
+                } else if o.type_guid == CLUSTER_INPUT || o.type_guid == CLUSTER_OUTPUT {
+                    // Boundary of a flattened cluster: handled as a pass-through.
+                    self.pass_through(o, r, &prefix);
+                } else {
+                    self.unsupported(
+                        o,
+                        r,
+                        "component",
+                        "no locus node declares this Grasshopper type".to_owned(),
+                    );
+                }
+            }
+        }
+    }
+
+    /// Maps a component or floating parameter onto a node of `node_type`.
+    fn component(
+        &mut self,
+        o: &GhObject,
+        r: ObjectRef,
+        node_type: &NodeType,
+        prefix: &str,
+    ) -> Option<NodeId> {
+        let variable = node_type.variable_inputs.is_some();
+        if !variable && o.inputs.len() > node_type.inputs.len() {
+            self.unsupported(
+                o,
+                r,
+                "component",
+                format!(
+                    "it has {} inputs, the node {} has {}",
+                    o.inputs.len(),
+                    node_type.id,
+                    node_type.inputs.len()
+                ),
+            );
+            return None;
+        }
+        if o.outputs.len() > node_type.outputs.len() {
+            self.unsupported(
+                o,
+                r,
+                "component",
+                format!(
+                    "it has {} outputs, the node {} has {}",
+                    o.outputs.len(),
+                    node_type.id,
+                    node_type.outputs.len()
+                ),
+            );
+            return None;
+        }
+        let base = slug(if o.nickname.is_empty() {
+            &o.name
+        } else {
+            &o.nickname
+        });
+        let id = self.unique_id(prefix, &base);
+        let mut node = GraphNode {
+            id: id.clone(),
+            node_type: node_type.id.clone(),
+            disabled: o.disabled,
+            ..GraphNode::default()
+        };
+        let input_ports: Vec<(String, DataType)> = if variable {
+            let names: Vec<String> = o
+                .inputs
+                .iter()
+                .enumerate()
+                .map(|(k, p)| {
+                    if p.nickname.trim().is_empty() {
+                        format!("x{k}")
+                    } else {
+                        p.nickname.clone()
+                    }
+                })
+                .collect();
+            let t = node_type
+                .variable_inputs
+                .as_ref()
+                .map(|v| v.template.data_type)
+                .unwrap_or(DataType::Generic);
+            node.input_names = Some(names.clone());
+            names.into_iter().map(|n| (n, t)).collect()
+        } else {
+            for (k, p) in o.inputs.iter().enumerate() {
+                let port = &node_type.inputs[k];
+                if !o.floating && !port.is_named(&p.nickname) && !port.is_named(&p.name) {
+                    self.diag(
+                        Level::Warning,
+                        "port-name",
+                        format!(
+                            "{r}: input {k} is \"{}\" ({}) in the file but \"{}\" ({}) in {}; mapped by index",
+                            p.name, p.nickname, port.name, port.nickname, node_type.id
+                        ),
+                        Some(r.clone()),
+                        Some(id.clone()),
+                        Some(port.nickname.clone()),
+                    );
+                }
+            }
+            node_type
+                .inputs
+                .iter()
+                .map(|p| (p.nickname.clone(), p.data_type))
+                .collect()
+        };
+        for (k, p) in o.outputs.iter().enumerate() {
+            let port = &node_type.outputs[k];
+            if !o.floating && !port.is_named(&p.nickname) && !port.is_named(&p.name) {
+                self.diag(
+                    Level::Warning,
+                    "port-name",
+                    format!(
+                        "{r}: output {k} is \"{}\" ({}) in the file but \"{}\" ({}) in {}; mapped by index",
+                        p.name, p.nickname, port.name, port.nickname, node_type.id
+                    ),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    Some(port.nickname.clone()),
+                );
+            }
+            self.sources.insert(
+                p.instance.clone(),
+                Source::Port(PortRef {
+                    node: id.clone(),
+                    port: port.nickname.clone(),
+                }),
+            );
+        }
+        let resolved = node_type.resolve_inputs(node.input_names.as_deref());
+        for (k, p) in o.inputs.iter().enumerate() {
+            let (port, data_type) = input_ports[k].clone();
+            self.input_ports.insert(
+                p.instance.clone(),
+                PortRef {
+                    node: id.clone(),
+                    port: port.clone(),
+                },
+            );
+            self.input_data(&mut node, &r, p, &port, data_type);
+            let required = resolved
+                .get(k)
+                .is_some_and(|q| q.default.is_none() && !q.optional);
+            let empty = p.sources.is_empty()
+                && !node.values.iter().any(|(q, _)| *q == port)
+                && (required || p.persistent.as_ref().is_some_and(|t| t.branches.is_empty()));
+            if empty {
+                // Nothing reaches the input and nothing was typed in: it is empty, so the node
+                // runs on no data (Grasshopper's "failed to collect data"), instead of the
+                // graph failing to check.
+                node.values.push((port.clone(), Literal("{}".to_owned())));
+            }
+        }
+        if node_type.id == "maths.expression"
+            && let Some(formula) = o.container.str("Expression")
+        {
+            node.settings
+                .push(("expression".to_owned(), Literal(literal::text(formula))));
+        }
+        let mut note = format!("{} \"{}\"", o.type_name, o.nickname);
+        if o.disabled {
+            note.push_str(", disabled");
+        }
+        self.notes.push((id.clone(), note));
+        self.nodes_by_object.insert(o.instance.clone(), id.clone());
+        self.node_pos.insert(id.clone(), self.graph.nodes.len());
+        self.graph.nodes.push(node);
+        self.report.objects.push((r, Outcome::Mapped(id.clone())));
+        Some(id)
+    }
+
+    /// Wires, persistent data, modifiers and foreign data of one input.
+    fn input_data(
+        &mut self,
+        node: &mut GraphNode,
+        r: &ObjectRef,
+        p: &GhParam,
+        port: &str,
+        data_type: DataType,
+    ) {
+        let id = node.id.clone();
+        if !p.sources.is_empty() {
+            self.pending.push(PendingInput {
+                node: id.clone(),
+                port: port.to_owned(),
+                sources: p.sources.clone(),
+                object: r.clone(),
+            });
+        } else if let Some(tree) = &p.persistent
+            && !tree.branches.is_empty()
+            && tree
+                .branches
+                .iter()
+                .flat_map(|(_, items)| items)
+                .any(|i| !matches!(i, GhItem::Other(_)))
+        {
+            let value = literal::tree(tree, data_type);
+            match locus_runtime::parse_literal(&value.0, data_type) {
+                Ok(_) => node.values.push((port.to_owned(), value)),
+                Err(e) => self.diag(
+                    Level::Warning,
+                    "bad-value",
+                    format!(
+                        "{r}: the data typed into input {port} ({}) does not read as {}: {e}; left out",
+                        value.0,
+                        data_type.name()
+                    ),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    Some(port.to_owned()),
+                ),
+            }
+        }
+        let mut mods: Vec<Modifier> = p
+            .modifiers
+            .iter()
+            .filter_map(|m| {
+                let m = match m {
+                    GhModifier::Flatten => Modifier::Flatten,
+                    GhModifier::Graft => Modifier::Graft,
+                    GhModifier::Simplify => Modifier::Simplify,
+                    GhModifier::Reverse => Modifier::Reverse,
+                    GhModifier::Invert => Modifier::Invert,
+                    GhModifier::Degrees => Modifier::Degrees,
+                    GhModifier::Reparameterize => Modifier::Reparameterize,
+                };
+                let fits = match m {
+                    Modifier::Invert => data_type == DataType::Boolean,
+                    Modifier::Degrees => data_type == DataType::Number,
+                    Modifier::Reparameterize => {
+                        matches!(data_type, DataType::Curve | DataType::Surface)
+                    }
+                    _ => true,
+                };
+                fits.then_some(m)
+            })
+            .collect();
+        mods.dedup();
+        if mods.contains(&Modifier::Simplify)
+            && (mods.contains(&Modifier::Flatten) || mods.contains(&Modifier::Graft))
+        {
+            // locus applies one structural modifier per input; Grasshopper's mapping wins.
+            mods.retain(|m| *m != Modifier::Simplify);
+            self.diag(
+                Level::Warning,
+                "modifiers",
+                format!(
+                    "{r}: input {port} has simplify with flatten or graft; simplify is left out"
+                ),
+                Some(r.clone()),
+                Some(id.clone()),
+                Some(port.to_owned()),
+            );
+        }
+        if !mods.is_empty() {
+            node.modifiers.push((port.to_owned(), mods));
+        }
+        if let Some(e) = &p.expression {
+            self.diag(
+                Level::Warning,
+                "unsupported-input-expression",
+                format!("{r}: the expression \"{e}\" on input {port} is not applied"),
+                Some(r.clone()),
+                Some(id.clone()),
+                Some(port.to_owned()),
+            );
+        }
+        for kind in &p.foreign_data {
+            if kind == "ON_Data" {
+                self.diag(
+                    Level::Error,
+                    "unsupported-internalised",
+                    format!(
+                        "{r} (instance {}): input {port} holds internalised Rhino geometry (ON_Data), which locus cannot read; the input has no data",
+                        r.instance
+                    ),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    Some(port.to_owned()),
+                );
+            } else if p.sources.is_empty() {
+                let name = if r.nickname.is_empty() {
+                    id.0.clone()
+                } else {
+                    r.nickname.clone()
+                };
+                self.diag(
+                    Level::Warning,
+                    "referenced-geometry",
+                    format!(
+                        "{r} (instance {}): input {port} references geometry in the Rhino document ({kind}); it is the named input \"{name}\", to be set",
+                        r.instance
+                    ),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    Some(port.to_owned()),
+                );
+                self.inputs.push((
+                    name,
+                    PortRef {
+                        node: id.clone(),
+                        port: port.to_owned(),
+                    },
+                ));
+            }
+        }
+    }
+
+    fn pass_through(&mut self, o: &GhObject, r: ObjectRef, prefix: &str) {
+        let Some(p) = o.inputs.first() else {
+            self.report.objects.push((r, Outcome::Ignored));
+            return;
+        };
+        let has_data = p
+            .persistent
+            .as_ref()
+            .is_some_and(|t| !t.branches.is_empty());
+        if p.sources.is_empty() && has_data || !p.modifiers.is_empty() {
+            // Data typed in, or modifiers to apply: a generic parameter node keeps them.
+            if let Some(t) = self.registry.get("params.geometry").cloned()
+                && t.inputs
+                    .first()
+                    .is_some_and(|i| i.data_type == DataType::Generic)
+            {
+                self.component(o, r, &t, prefix);
+                return;
+            }
+        }
+        self.sources
+            .insert(p.instance.clone(), Source::Through(p.sources.clone()));
+        self.report.objects.push((r, Outcome::PassThrough));
+    }
+
+    fn widget(&mut self, o: &GhObject, r: ObjectRef, kind: Special, prefix: &str) {
+        let c = &o.container;
+        let fed = o.inputs.first().is_some_and(|p| !p.sources.is_empty());
+        let name = if o.nickname.trim().is_empty() {
+            o.type_name.clone()
+        } else {
+            o.nickname.clone()
+        };
+        if kind == Special::Panel && fed {
+            let sources = o.inputs[0].sources.clone();
+            self.sources.insert(
+                o.outputs[0].instance.clone(),
+                Source::Through(sources.clone()),
+            );
+            self.panels.push((name, sources));
+            self.report.objects.push((r, Outcome::PassThrough));
+            return;
+        }
+        let (node_type, items, note): (&str, Vec<GhItem>, String) = match kind {
+            Special::Slider => {
+                let s = c.chunk("Slider");
+                let get = |n: &str| s.and_then(|s| s.f64(n));
+                let value = get("Value").unwrap_or(0.0);
+                let kind = match s.and_then(|s| s.i64("Interval")) {
+                    Some(1) => "integer",
+                    Some(2) => "even",
+                    Some(3) => "odd",
+                    _ => "float",
+                };
+                let note = format!(
+                    "Number Slider \"{}\": {kind}, {} to {}, {} digits",
+                    o.nickname,
+                    literal::number(get("Min").unwrap_or(0.0)),
+                    literal::number(get("Max").unwrap_or(1.0)),
+                    get("Digits").unwrap_or(0.0)
+                );
+                ("params.number", vec![GhItem::Number(value)], note)
+            }
+            Special::Panel => {
+                let text = c.str("UserText").unwrap_or_default();
+                let multiline = c
+                    .chunk("PanelProperties")
+                    .and_then(|p| p.bool("Multiline"))
+                    .unwrap_or(true);
+                let items = if text.is_empty() {
+                    Vec::new()
+                } else if multiline {
+                    vec![GhItem::Text(text.to_owned())]
+                } else {
+                    text.lines().map(|l| GhItem::Text(l.to_owned())).collect()
+                };
+                ("params.text", items, format!("Panel \"{}\"", o.nickname))
+            }
+            Special::Toggle => (
+                "params.boolean",
+                vec![GhItem::Boolean(c.bool("ToggleValue").unwrap_or(false))],
+                format!("Boolean Toggle \"{}\"", o.nickname),
+            ),
+            Special::Button => (
+                "params.boolean",
+                vec![GhItem::Boolean(false)],
+                format!("Button \"{}\" (not pressed)", o.nickname),
+            ),
+            _ => {
+                let mut values = Vec::new();
+                let mut numeric = true;
+                for item in c.chunks_named("ListItem") {
+                    if item.bool("Selected") == Some(true) {
+                        let e = item.str("Expression").unwrap_or_default().trim();
+                        match crate::xml::parse_float(e) {
+                            Ok(x) => values.push(GhItem::Number(x)),
+                            Err(_) => {
+                                numeric = false;
+                                values.push(GhItem::Text(e.trim_matches('"').to_owned()));
+                            }
+                        }
+                    }
+                }
+                let node_type = if numeric {
+                    "params.number"
+                } else {
+                    "params.text"
+                };
+                (node_type, values, format!("Value List \"{}\"", o.nickname))
+            }
+        };
+        let Some(t) = self.registry.get(node_type).cloned() else {
+            self.unsupported(o, r, "component", format!("no {node_type} in the registry"));
+            return;
+        };
+        let mut widget = o.clone();
+        if let Some(p) = widget.inputs.first_mut() {
+            p.persistent = (!items.is_empty()).then(|| GhTree {
+                branches: vec![(vec![0], items)],
+            });
+        }
+        if let Some(id) = self.component(&widget, r, &t, prefix) {
+            if let Some(n) = self.notes.iter_mut().find(|(n, _)| *n == id) {
+                n.1 = note;
+            }
+            if !fed {
+                let port = t.inputs[0].nickname.clone();
+                self.inputs.push((name, PortRef { node: id, port }));
+            }
+        }
+    }
+
+    fn cluster(&mut self, o: &GhObject, r: ObjectRef, prefix: &str, depth: usize) {
+        let Some(bytes) = o
+            .container
+            .item("ClusterDocument")
+            .and_then(|i| match &i.value {
+                crate::archive::Value::Bytes(b) => Some(b.clone()),
+                _ => None,
+            })
+        else {
+            self.unsupported(o, r, "cluster", "the cluster has no document".to_owned());
+            return;
+        };
+        let inner = match read_cluster(&bytes, self.limits, depth + 1) {
+            Ok(d) => d,
+            Err(e) => {
+                self.unsupported(o, r, "cluster", format!("its document does not read: {e}"));
+                return;
+            }
+        };
+        let base = slug(if o.nickname.is_empty() {
+            &o.name
+        } else {
+            &o.nickname
+        });
+        let path = self.unique_id(prefix, &base).0;
+        // The cluster's ports are the Cluster Input and Output objects inside, in order.
+        let boundary_in: Vec<&GhObject> = inner
+            .objects
+            .iter()
+            .filter(|x| x.type_guid == CLUSTER_INPUT)
+            .collect();
+        let boundary_out: Vec<&GhObject> = inner
+            .objects
+            .iter()
+            .filter(|x| x.type_guid == CLUSTER_OUTPUT)
+            .collect();
+        if boundary_in.len() != o.inputs.len() || boundary_out.len() != o.outputs.len() {
+            self.unsupported(
+                o,
+                r,
+                "cluster",
+                format!(
+                    "its ports ({} in, {} out) do not match its document ({} in, {} out)",
+                    o.inputs.len(),
+                    o.outputs.len(),
+                    boundary_in.len(),
+                    boundary_out.len()
+                ),
+            );
+            return;
+        }
+        self.report.objects.push((r.clone(), Outcome::PassThrough));
+        // Outer input k feeds the inner Cluster Input k; inner Cluster Output k is outer
+        // output k.
+        for (outer, inner_in) in o.inputs.iter().zip(&boundary_in) {
+            if let Some(p) = inner_in.outputs.first() {
+                self.sources
+                    .insert(p.instance.clone(), Source::Through(outer.sources.clone()));
+            }
+        }
+        for (outer, inner_out) in o.outputs.iter().zip(&boundary_out) {
+            if let Some(p) = inner_out.inputs.first() {
+                self.sources
+                    .insert(outer.instance.clone(), Source::Through(p.sources.clone()));
+            }
+        }
+        let cluster_path = if r.cluster.is_empty() {
+            path.clone()
+        } else {
+            path.clone()
+        };
+        let rest = GhDocument {
+            objects: inner
+                .objects
+                .iter()
+                .filter(|x| x.type_guid != CLUSTER_INPUT && x.type_guid != CLUSTER_OUTPUT)
+                .cloned()
+                .collect(),
+            libraries: inner.libraries.clone(),
+            ..GhDocument::default()
+        };
+        let saved = std::mem::replace(&mut self.libraries, rest.libraries.clone());
+        self.objects(&rest, &cluster_path, depth + 1);
+        self.libraries = saved;
+    }
+
+    /// The data type of a port of a node already in the graph.
+    fn port_type(&self, port: &PortRef, input: bool) -> Option<DataType> {
+        let node = &self.graph.nodes[*self.node_pos.get(&port.node)?];
+        let t = self.registry.get(&node.node_type)?;
+        if input {
+            t.resolve_inputs(node.input_names.as_deref())
+                .iter()
+                .find(|p| p.is_named(&port.port))
+                .map(|p| p.data_type)
+        } else {
+            t.outputs
+                .iter()
+                .find(|p| p.is_named(&port.port))
+                .map(|p| p.data_type)
+        }
+    }
+
+    /// Resolves an output GUID to node ports, following pass-throughs.
+    fn resolve(&self, guid: &str, seen: &mut Vec<String>, out: &mut Vec<Result<PortRef, String>>) {
+        if seen.iter().any(|s| s == guid) || seen.len() > 256 {
+            out.push(Err("a loop of pass-through parameters".to_owned()));
+            return;
+        }
+        match self.sources.get(guid) {
+            Some(Source::Port(p)) => out.push(Ok(p.clone())),
+            Some(Source::Missing(why)) => out.push(Err(why.clone())),
+            Some(Source::Through(next)) => {
+                seen.push(guid.to_owned());
+                for n in next {
+                    self.resolve(n, seen, out);
+                }
+                seen.pop();
+            }
+            None => out.push(Err(format!("no data from an unknown object {guid}"))),
+        }
+    }
+
+    fn wire(&mut self) {
+        let pending = std::mem::take(&mut self.pending);
+        for input in pending {
+            let mut resolved = Vec::new();
+            for s in &input.sources {
+                self.resolve(s, &mut Vec::new(), &mut resolved);
+            }
+            let mut missing = false;
+            let mut wired = false;
+            for r in resolved {
+                match r {
+                    Ok(from) => {
+                        let (a, b) = (
+                            self.port_type(&from, false),
+                            self.port_type(
+                                &PortRef {
+                                    node: input.node.clone(),
+                                    port: input.port.clone(),
+                                },
+                                true,
+                            ),
+                        );
+                        if let (Some(a), Some(b)) = (a, b)
+                            && !locus_runtime::can_cast(a, b)
+                        {
+                            missing = true;
+                            self.diag(
+                                Level::Warning,
+                                "no-cast",
+                                format!(
+                                    "node \"{}\" input {}: the wire from {from} carries {} data, which does not cast to {}; left out",
+                                    input.node,
+                                    input.port,
+                                    a.name(),
+                                    b.name()
+                                ),
+                                Some(input.object.clone()),
+                                Some(input.node.clone()),
+                                Some(input.port.clone()),
+                            );
+                            continue;
+                        }
+                        wired = true;
+                        self.graph.wires.push(Wire {
+                            from,
+                            to: PortRef {
+                                node: input.node.clone(),
+                                port: input.port.clone(),
+                            },
+                        });
+                    }
+                    Err(why) => {
+                        missing = true;
+                        self.diag(
+                            Level::Warning,
+                            "no-data",
+                            format!("node \"{}\" input {}: {why}", input.node, input.port),
+                            Some(input.object.clone()),
+                            Some(input.node.clone()),
+                            Some(input.port.clone()),
+                        );
+                    }
+                }
+            }
+            if missing
+                && !wired
+                && let Some(&k) = self.node_pos.get(&input.node)
+            {
+                let node = &mut self.graph.nodes[k];
+                // Nothing reaches the input: it is empty (no branches), so the node runs on no
+                // data, as in Grasshopper, instead of the graph failing to check.
+                node.values.retain(|(p, _)| *p != input.port);
+                node.values
+                    .push((input.port.clone(), Literal("{}".to_owned())));
+            }
+        }
+        let panels = std::mem::take(&mut self.panels);
+        for (name, sources) in panels {
+            let mut resolved = Vec::new();
+            for s in &sources {
+                self.resolve(s, &mut Vec::new(), &mut resolved);
+            }
+            let ports: Vec<PortRef> = resolved.into_iter().filter_map(Result::ok).collect();
+            let many = ports.len() > 1;
+            for (k, p) in ports.into_iter().enumerate() {
+                let n = if many {
+                    format!("{name} {}", k + 1)
+                } else {
+                    name.clone()
+                };
+                self.outputs.push((n, p));
+            }
+        }
+    }
+
+    /// `RH_IN:name` / `RH_OUT:name` groups.
+    fn groups(&mut self, doc: &GhDocument) {
+        for g in doc.objects.iter().filter(|o| o.type_guid == GROUP) {
+            let (is_in, name) = if let Some(n) = g.nickname.strip_prefix("RH_IN:") {
+                (true, n)
+            } else if let Some(n) = g.nickname.strip_prefix("RH_OUT:") {
+                (false, n)
+            } else {
+                continue;
+            };
+            // The old convention puts a type code first: `RH_IN:102:name`.
+            let name = match name.split_once(':') {
+                Some((code, rest))
+                    if !rest.is_empty()
+                        && code.len() == 3
+                        && code.bytes().all(|b| b.is_ascii_digit()) =>
+                {
+                    rest
+                }
+                _ => name,
+            };
+            for id in g.container.items_named("ID") {
+                let Some(target) = id.value.as_str() else {
+                    continue;
+                };
+                let Some(node) = self.nodes_by_object.get(target).cloned() else {
+                    // A group may name a component's port (as `locus export-ghx` writes them).
+                    if is_in && let Some(port) = self.input_ports.get(target).cloned() {
+                        self.inputs.retain(|(_, p)| *p != port);
+                        self.inputs.push((name.to_owned(), port));
+                    } else if !is_in && let Some(Source::Port(port)) = self.sources.get(target) {
+                        self.outputs.push((name.to_owned(), port.clone()));
+                    }
+                    continue;
+                };
+                let Some(graph_node) = self.node_pos.get(&node).map(|&k| &self.graph.nodes[k])
+                else {
+                    continue;
+                };
+                let Some(t) = self.registry.get(&graph_node.node_type) else {
+                    continue;
+                };
+                if is_in {
+                    if let Some(port) = t.inputs.first() {
+                        // The group names the input: replace a name the widget gave it.
+                        self.inputs.retain(|(_, p)| p.node != node);
+                        self.inputs.push((
+                            name.to_owned(),
+                            PortRef {
+                                node,
+                                port: port.nickname.clone(),
+                            },
+                        ));
+                    }
+                } else if let Some(port) = t.outputs.first() {
+                    self.outputs.push((
+                        name.to_owned(),
+                        PortRef {
+                            node,
+                            port: port.nickname.clone(),
+                        },
+                    ));
+                }
+            }
+        }
+    }
+
+    fn finish(mut self) -> Import {
+        // Values in port order, whichever step set them.
+        for node in &mut self.graph.nodes {
+            if let Some(t) = self.registry.get(&node.node_type) {
+                let ports = t.resolve_inputs(node.input_names.as_deref());
+                node.values.sort_by_key(|(name, _)| {
+                    ports
+                        .iter()
+                        .position(|p| p.is_named(name))
+                        .unwrap_or(usize::MAX)
+                });
+            }
+        }
+        let mut seen = HashSet::new();
+        for (name, target) in std::mem::take(&mut self.inputs) {
+            let name = unique_name(&mut seen, name);
+            self.graph.inputs.push(GraphInput { name, target });
+        }
+        if self.outputs.is_empty() {
+            // No marked outputs: the outputs of the nodes nothing reads.
+            let read: HashSet<&NodeId> = self.graph.wires.iter().map(|w| &w.from.node).collect();
+            for n in &self.graph.nodes {
+                if read.contains(&n.id) || n.node_type.starts_with("params.") {
+                    continue;
+                }
+                if let Some(t) = self.registry.get(&n.node_type) {
+                    for p in &t.outputs {
+                        self.outputs.push((
+                            format!("{}.{}", n.id, p.nickname),
+                            PortRef {
+                                node: n.id.clone(),
+                                port: p.nickname.clone(),
+                            },
+                        ));
+                    }
+                }
+            }
+        }
+        let mut seen = HashSet::new();
+        for (name, source) in std::mem::take(&mut self.outputs) {
+            let name = unique_name(&mut seen, name);
+            self.graph.outputs.push(GraphOutput { name, source });
+        }
+        Import {
+            graph: self.graph,
+            report: self.report,
+            notes: self.notes,
+        }
+    }
+}
+
+fn unique_name(seen: &mut HashSet<String>, name: String) -> String {
+    let mut candidate = name.clone();
+    let mut k = 2;
+    while !seen.insert(candidate.clone()) {
+        candidate = format!("{name} ({k})");
+        k += 1;
+    }
+    candidate
+}

@@ -1,0 +1,75 @@
+//! The command on real Grasshopper definitions: `locus test` with hand-checked expectations,
+//! `locus import --report`, `locus check --format json`, `locus export-ghx`.
+
+use std::process::Command;
+
+fn locus(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_locus"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("locus runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn hand_checked_definitions_pass_locus_test() {
+    let (code, out, _) = locus(&["test", "crates/ghx/tests/data"]);
+    assert_eq!(code, 0, "{out}");
+    let ok = out.lines().filter(|l| l.starts_with("ok ")).count();
+    assert!(ok >= 6, "{out}");
+    assert!(out.contains(", 0 failed,"), "{out}");
+}
+
+#[test]
+fn import_report_and_json_check() {
+    let file = "crates/ghx/tests/data/runxel__attractor_2_linear.ghx";
+    let (code, out, _) = locus(&["import", file, "--report"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("objects: "), "{out}");
+    assert!(out.contains("runs whole: no"), "{out}");
+    assert!(out.contains("graph: checks"), "{out}");
+    let (_, out, _) = locus(&["check", "--format", "json", file]);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let unsupported = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|d| d["code"] == "unsupported-cluster" || d["code"] == "unsupported-script")
+        .expect("the tutorial's script cluster is reported");
+    assert_eq!(unsupported["severity"], "error");
+    assert!(
+        unsupported["gh_instance"]
+            .as_str()
+            .is_some_and(|s| s.len() == 36)
+    );
+}
+
+#[test]
+fn run_reads_gh_and_export_round_trips() {
+    let file = "crates/ghx/tests/data/mcneel-compute__ghhops-server-py_examples_Hops_Example.gh";
+    let (code, out, err) = locus(&["run", file, "--set", "Number Slider (3)=2.5"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Circle (R:2.5 at {0, 0, 0})"), "{out}");
+    let dir = std::env::temp_dir().join(format!("locus-ghx-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let ron = dir.join("a.ron");
+    let ghx = dir.join("a.ghx");
+    let (code, _, err) = locus(&["import", file, "-o", ron.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = locus(&[
+        "export-ghx",
+        ron.to_str().unwrap(),
+        "-o",
+        ghx.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let (code, out, err) = locus(&["run", ghx.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Circle (R:3.6 at {0, 0, 0})"), "{out}");
+    std::fs::remove_dir_all(&dir).ok();
+}
