@@ -176,6 +176,7 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
                 "params.brep",
                 "params.box",
                 "params.geometry",
+                "params.mesh",
             ]
             .contains(&t.id.as_str())
         })
