@@ -66,22 +66,27 @@ pub fn render(scene: &Scene, options: &PictureOptions) -> Result<Pixmap, ExportE
     let view = options.view;
     let (_, _, forward) = view.axes();
 
-    // Fit the projected bounding box of the scene into the picture with a 5 % margin.
-    let bbox = scene.bounding_box();
-    if bbox.is_empty() {
-        return Ok(pixmap);
-    }
+    // Fit the projected geometry into the picture with a 5 % margin.
     let (mut lo, mut hi) = (
         (f64::INFINITY, f64::INFINITY),
         (f64::NEG_INFINITY, f64::NEG_INFINITY),
     );
     let (mut near, mut far) = (f64::INFINITY, f64::NEG_INFINITY);
-    for corner in bbox.corners() {
-        let (x, y, d) = view.project(corner);
-        lo = (lo.0.min(x), lo.1.min(y));
-        hi = (hi.0.max(x), hi.1.max(y));
-        near = near.min(d);
-        far = far.max(d);
+    for object in &scene.objects {
+        let mesh_points = object.mesh.iter().flat_map(|m| m.vertices().iter());
+        for &p in mesh_points
+            .chain(object.lines.iter().flatten())
+            .chain(&object.points)
+        {
+            let (x, y, d) = view.project(p);
+            lo = (lo.0.min(x), lo.1.min(y));
+            hi = (hi.0.max(x), hi.1.max(y));
+            near = near.min(d);
+            far = far.max(d);
+        }
+    }
+    if !(lo.0.is_finite() && hi.0.is_finite()) {
+        return Ok(pixmap);
     }
     let span = ((hi.0 - lo.0) / f64::from(w))
         .max((hi.1 - lo.1) / f64::from(h))

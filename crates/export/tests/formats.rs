@@ -163,7 +163,7 @@ fn pictures_of_the_tutorials_are_not_blank_and_fit_the_geometry() {
     for graph in [
         "exploded_box.ron",
         "tangent_spheres.ron",
-        "surface_singularity.ron",
+        "multiple_transformations.ron",
         "face_direction.ron",
     ] {
         let scene = scene_of(graph);
