@@ -7,6 +7,7 @@ use locus_export::{ExportOptions, Format, PictureOptions, Scene, Tessellation, V
 use locus_runtime::{Evaluator, NodeRegistry};
 
 use crate::graph_file::RunLimits;
+use crate::write_file::write_bytes_atomically;
 
 /// The scene of the named outputs of an evaluated graph that `--output` selects.
 fn scene(evaluator: &Evaluator, limits: &RunLimits) -> Scene {
@@ -16,24 +17,6 @@ fn scene(evaluator: &Evaluator, limits: &RunLimits) -> Scene {
         scene.add_output(name, tree, &settings);
     }
     scene
-}
-
-/// Writes `bytes` to `path` through a temporary file in the same folder, renamed into place,
-/// so that a reader never sees half a file.
-fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let temp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    std::fs::write(&temp, bytes)?;
-    std::fs::rename(&temp, path).inspect_err(|_| {
-        let _ = std::fs::remove_file(&temp);
-    })
 }
 
 /// Writes the outputs of an evaluated graph into each file, in the format its extension names.
@@ -61,7 +44,7 @@ pub(crate) fn write_files(
 fn write_one(scene: &Scene, file: &Path, options: &ExportOptions) -> Result<(), String> {
     let format = Format::from_path(file).map_err(|e| e.to_string())?;
     let bytes = export(scene, format, options).map_err(|e| format!("{}: {e}", file.display()))?;
-    write_atomically(file, &bytes).map_err(|e| format!("cannot write {}: {e}", file.display()))
+    write_bytes_atomically(file, &bytes)
 }
 
 /// Parses `WIDTHxHEIGHT`.
@@ -169,13 +152,13 @@ pub(crate) fn view(
         }
     };
     let file = output.map_or_else(|| graph.with_extension("html"), Path::to_path_buf);
-    match write_atomically(&file, page.as_bytes()) {
+    match write_bytes_atomically(&file, page.as_bytes()) {
         Ok(()) => {
             println!("{}", file.display());
             0
         }
         Err(e) => {
-            eprintln!("locus: cannot write {}: {e}", file.display());
+            eprintln!("locus: {e}");
             crate::EXIT_EXPORT_FAILED
         }
     }

@@ -7,11 +7,21 @@ use std::path::{Path, PathBuf};
 /// Replaces the contents of `path` with `text` atomically. A symlink is followed and its
 /// target written; the target's permissions are kept.
 pub(crate) fn write_atomically(path: &Path, text: &str) -> Result<(), String> {
-    let target: PathBuf = std::fs::canonicalize(path)
-        .map_err(|e| format!("cannot resolve {}: {e}", path.display()))?;
-    let dir = target
-        .parent()
-        .ok_or_else(|| format!("{} has no folder", target.display()))?;
+    write_bytes_atomically(path, text.as_bytes())
+}
+
+/// As [`write_atomically`], for bytes; a file that does not exist yet is created.
+pub(crate) fn write_bytes_atomically(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    let target: PathBuf = if path.exists() {
+        std::fs::canonicalize(path)
+            .map_err(|e| format!("cannot resolve {}: {e}", path.display()))?
+    } else {
+        path.to_path_buf()
+    };
+    let dir = match target.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
     let name = target
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
@@ -19,7 +29,7 @@ pub(crate) fn write_atomically(path: &Path, text: &str) -> Result<(), String> {
     let temp = dir.join(format!(".{name}.locus-{}.tmp", std::process::id()));
     let result = (|| -> std::io::Result<()> {
         let mut file = std::fs::File::create(&temp)?;
-        file.write_all(text.as_bytes())?;
+        file.write_all(bytes)?;
         file.sync_all()?;
         if let Ok(meta) = std::fs::metadata(&target) {
             std::fs::set_permissions(&temp, meta.permissions())?;

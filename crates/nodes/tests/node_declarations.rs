@@ -181,7 +181,6 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
                 "params.circle",
                 "params.arc",
                 "params.rectangle",
-
                 "params.mesh",
             ]
             .contains(&t.id.as_str())
