@@ -88,16 +88,21 @@ pub(crate) fn render(registry: &NodeRegistry, args: &RenderArgs<'_>) -> u8 {
             return crate::EXIT_USAGE;
         }
     };
-    let mut evaluator =
-        match crate::graph_file::prepared(registry, args.graph, args.sets, args.threads) {
-            Ok(e) => e,
-            Err(code) => return code,
-        };
+    let mut evaluator = match crate::graph_file::prepared(
+        registry,
+        args.graph,
+        args.sets,
+        args.threads,
+        args.limits,
+    ) {
+        Ok(e) => e,
+        Err(code) => return code,
+    };
     evaluator.evaluate();
     for m in evaluator.messages() {
         eprintln!("{m}");
     }
-    let scene = scene(&evaluator);
+    let scene = scene(&evaluator, args.limits);
     for line in &scene.skipped {
         eprintln!("locus: not drawn: {line}");
     }

@@ -50,6 +50,37 @@ fn vec_to_gltf(v: Vector3) -> [f32; 3] {
     [v.x as f32, v.z as f32, -v.y as f32]
 }
 
+/// A branch's path and the nodes of its items.
+type BranchNodes = (String, Vec<json::Index<json::Node>>);
+
+/// How an accessor's elements are laid out.
+#[derive(Clone, Copy)]
+struct Layout {
+    component: json::accessor::ComponentType,
+    type_: json::accessor::Type,
+    target: json::buffer::Target,
+    normalized: bool,
+}
+
+const VEC3_F32: Layout = Layout {
+    component: json::accessor::ComponentType::F32,
+    type_: json::accessor::Type::Vec3,
+    target: json::buffer::Target::ArrayBuffer,
+    normalized: false,
+};
+const COLOUR_U8: Layout = Layout {
+    component: json::accessor::ComponentType::U8,
+    type_: json::accessor::Type::Vec4,
+    target: json::buffer::Target::ArrayBuffer,
+    normalized: true,
+};
+const INDEX_U32: Layout = Layout {
+    component: json::accessor::ComponentType::U32,
+    type_: json::accessor::Type::Scalar,
+    target: json::buffer::Target::ElementArrayBuffer,
+    normalized: false,
+};
+
 /// The glTF document under construction with its binary buffer.
 struct Builder {
     root: json::Root,
@@ -64,7 +95,7 @@ impl Builder {
         bytes: &[u8],
         target: Option<json::buffer::Target>,
     ) -> json::Index<json::buffer::View> {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
         let offset = self.bin.len();
@@ -85,25 +116,22 @@ impl Builder {
         &mut self,
         bytes: &[u8],
         count: usize,
-        component: json::accessor::ComponentType,
-        type_: json::accessor::Type,
+        layout: Layout,
         bounds: Option<([f32; 3], [f32; 3])>,
-        target: json::buffer::Target,
-        normalized: bool,
     ) -> json::Index<json::Accessor> {
-        let view = self.view(bytes, Some(target));
+        let view = self.view(bytes, Some(layout.target));
         self.root.push(json::Accessor {
             buffer_view: Some(view),
             byte_offset: None,
             count: USize64::from(count),
-            component_type: Valid(json::accessor::GenericComponentType(component)),
+            component_type: Valid(json::accessor::GenericComponentType(layout.component)),
             extensions: None,
             extras: Default::default(),
-            type_: Valid(type_),
+            type_: Valid(layout.type_),
             min: bounds.map(|b| json!(b.0)),
             max: bounds.map(|b| json!(b.1)),
             name: None,
-            normalized,
+            normalized: layout.normalized,
             sparse: None,
         })
     }
@@ -119,15 +147,7 @@ impl Builder {
                 bytes.extend_from_slice(&q[k].to_le_bytes());
             }
         }
-        self.accessor(
-            &bytes,
-            points.len(),
-            json::accessor::ComponentType::F32,
-            json::accessor::Type::Vec3,
-            Some((lo, hi)),
-            json::buffer::Target::ArrayBuffer,
-            false,
-        )
+        self.accessor(&bytes, points.len(), VEC3_F32, Some((lo, hi)))
     }
 
     fn material(&mut self, color: Color, unlit_wire: bool) -> json::Index<json::Material> {
@@ -187,27 +207,11 @@ impl Builder {
                 bytes.extend_from_slice(&x.to_le_bytes());
             }
         }
-        let normal_accessor = self.accessor(
-            &bytes,
-            normals.len(),
-            json::accessor::ComponentType::F32,
-            json::accessor::Type::Vec3,
-            None,
-            json::buffer::Target::ArrayBuffer,
-            false,
-        );
+        let normal_accessor = self.accessor(&bytes, normals.len(), VEC3_F32, None);
         attributes.insert(Valid(json::mesh::Semantic::Normals), normal_accessor);
         if let Some(colors) = mesh.colors() {
             let bytes: Vec<u8> = colors.iter().flat_map(|c| [c.r, c.g, c.b, c.a]).collect();
-            let colour_accessor = self.accessor(
-                &bytes,
-                colors.len(),
-                json::accessor::ComponentType::U8,
-                json::accessor::Type::Vec4,
-                None,
-                json::buffer::Target::ArrayBuffer,
-                true,
-            );
+            let colour_accessor = self.accessor(&bytes, colors.len(), COLOUR_U8, None);
             attributes.insert(Valid(json::mesh::Semantic::Colors(0)), colour_accessor);
         }
         let mut bytes = Vec::with_capacity(mesh.triangle_count() * 12);
@@ -216,15 +220,7 @@ impl Builder {
                 bytes.extend_from_slice(&v.to_le_bytes());
             }
         }
-        let indices = self.accessor(
-            &bytes,
-            mesh.triangle_count() * 3,
-            json::accessor::ComponentType::U32,
-            json::accessor::Type::Scalar,
-            None,
-            json::buffer::Target::ElementArrayBuffer,
-            false,
-        );
+        let indices = self.accessor(&bytes, mesh.triangle_count() * 3, INDEX_U32, None);
         // With vertex colours the material is white so that the colours show as they are.
         let base = if mesh.colors().is_some() {
             Color::WHITE
@@ -322,7 +318,7 @@ fn build(scene: &Scene, options: &GltfOptions) -> Result<(json::Root, Vec<u8>), 
         ..Default::default()
     };
     // Outputs in first-seen order, branches in path order within each output.
-    let mut outputs: Vec<(String, Vec<(String, Vec<json::Index<json::Node>>)>)> = Vec::new();
+    let mut outputs: Vec<(String, Vec<BranchNodes>)> = Vec::new();
     for object in &scene.objects {
         let node = b.object_node(object);
         if outputs
@@ -382,7 +378,7 @@ fn build(scene: &Scene, options: &GltfOptions) -> Result<(json::Root, Vec<u8>), 
         nodes: vec![top],
     });
     b.root.scene = Some(scene_index);
-    while b.bin.len() % 4 != 0 {
+    while !b.bin.len().is_multiple_of(4) {
         b.bin.push(0);
     }
     if !b.bin.is_empty() {

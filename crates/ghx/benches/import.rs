@@ -68,10 +68,10 @@ fn bench(c: &mut Criterion) {
                 .root()
                 .children()
                 .count()
-        })
+        });
     });
     group.bench_function("read archive (chunk model)", |b| {
-        b.iter(|| locus_ghx::read_archive(&bytes, &Limits::default()).unwrap())
+        b.iter(|| locus_ghx::read_archive(&bytes, &Limits::default()).unwrap());
     });
     group.bench_function("import (archive + mapping onto a graph)", |b| {
         b.iter(|| {
@@ -80,7 +80,7 @@ fn bench(c: &mut Criterion) {
                 .graph
                 .nodes
                 .len()
-        })
+        });
     });
     group.finish();
 }

@@ -144,12 +144,12 @@ fn items_and_chunks(
     let chunks_xml = inner.w.into_inner();
     let n = n.to_string();
     out.start("items", &[("count", &n)]);
-    let _ = out.w.get_mut().extend_from_slice(&items_xml);
+    out.w.get_mut().extend_from_slice(&items_xml);
     out.end("items");
     if m > 0 {
         let m = m.to_string();
         out.start("chunks", &[("count", &m)]);
-        let _ = out.w.get_mut().extend_from_slice(&chunks_xml);
+        out.w.get_mut().extend_from_slice(&chunks_xml);
         out.end("chunks");
     }
 }

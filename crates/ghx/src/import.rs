@@ -805,11 +805,7 @@ impl Mapper<'_> {
                     .insert(outer.instance.clone(), Source::Through(p.sources.clone()));
             }
         }
-        let cluster_path = if r.cluster.is_empty() {
-            path.clone()
-        } else {
-            path.clone()
-        };
+        let cluster_path = path.clone();
         let rest = GhDocument {
             objects: inner
                 .objects

@@ -57,13 +57,13 @@ fn bench_one(c: &mut Criterion, name: &str, brep: &Brep, surface: &NurbsSurface)
     group.throughput(Throughput::Elements(triangles));
     group.sample_size(10);
     group.bench_function("mesh", |b| {
-        b.iter(|| black_box(Mesh::from_brep(black_box(brep), &parameters).unwrap()))
+        b.iter(|| black_box(Mesh::from_brep(black_box(brep), &parameters).unwrap()));
     });
     group.bench_function("baseline_points_on_grid", |b| {
         b.iter(|| {
             surface.points_on_grid(&us, &vs, &mut out).unwrap();
             black_box(&out);
-        })
+        });
     });
     group.finish();
 }
