@@ -46,6 +46,9 @@ pub(crate) fn value_to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound
         Value::Box(b) => Bound::new(py, PyBox(*b))?.into_any(),
         Value::Surface(s) => Bound::new(py, PySurface(s.clone()))?.into_any(),
         Value::Brep(b) => Bound::new(py, PyBrep(b.clone()))?.into_any(),
+        Value::Mesh(m) => Bound::new(py, PyMesh(m.clone()))?.into_any(),
+        // A colour as its (r, g, b, a) channels, 0 to 255.
+        Value::Colour(c) => PyTuple::new(py, [c.r, c.g, c.b, c.a])?.into_any(),
         Value::Line(_) | Value::Circle(_) | Value::Arc(_) | Value::Curve(_) => {
             let curve = PyCurve::from_value(value)
                 .ok_or_else(|| PyTypeError::new_err("not a curve value"))?;
@@ -581,10 +584,8 @@ pub(crate) fn item_from_py(
     if let Ok(b) = obj.cast::<PyBrep>() {
         return Ok(Some(Value::Brep(b.get().0.clone())));
     }
-    if obj.cast::<PyMesh>().is_ok() {
-        return Err(
-            "meshes cannot flow through graphs yet (there is no Mesh value type)".to_owned(),
-        );
+    if let Ok(m) = obj.cast::<PyMesh>() {
+        return Ok(Some(Value::Mesh(m.get().0.clone())));
     }
     if let Some(v) = coordinate_tuple(obj, hint) {
         if let Value::Point(p) = &v

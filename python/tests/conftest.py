@@ -23,6 +23,7 @@ PARAMS = {
     "Curve": ("params.curve", "Crv"),
     "Surface": ("params.surface", "Srf"),
     "Brep": ("params.brep", "Brep"),
+    "Mesh": ("params.mesh", "Mesh"),
     "Transform": ("params.transform", "Transform"),
     "Geometry": ("params.geometry", "Geo"),
 }

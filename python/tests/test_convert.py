@@ -225,10 +225,10 @@ def test_graph_casts_apply_on_the_way_in():
     assert through("Boolean", 0)["y"] is False
 
 
-def test_meshes_are_refused_until_graphs_carry_them():
+def test_meshes_flow_through_graphs():
     mesh = locus.Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)])
-    with pytest.raises(locus.InputError, match="Mesh value type"):
-        through("Geometry", mesh)
+    assert through("Mesh", mesh)["y"] == mesh
+    assert through("Geometry", mesh)["y"] == mesh
 
 
 def test_none_is_no_data():
