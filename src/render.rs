@@ -121,14 +121,26 @@ pub fn value_json(value: &Value) -> Json {
         }}),
         Value::Mesh(m) => {
             let mut mesh = Map::new();
-            mesh.insert("vertices".into(), m.vertices().iter().map(|p| point_json(*p)).collect());
+            mesh.insert(
+                "vertices".into(),
+                m.vertices().iter().map(|p| point_json(*p)).collect(),
+            );
             // Faces as three or four vertex indices (a triangle does not repeat its last).
-            mesh.insert("faces".into(), m.faces().iter().map(|f| json!(f.corners())).collect());
+            mesh.insert(
+                "faces".into(),
+                m.faces().iter().map(|f| json!(f.corners())).collect(),
+            );
             if let Some(n) = m.normals() {
-                mesh.insert("normals".into(), n.iter().map(|v| xyz(v.x, v.y, v.z)).collect());
+                mesh.insert(
+                    "normals".into(),
+                    n.iter().map(|v| xyz(v.x, v.y, v.z)).collect(),
+                );
             }
             if let Some(c) = m.colors() {
-                mesh.insert("colours".into(), c.iter().map(|&c| colour_json(c)).collect());
+                mesh.insert(
+                    "colours".into(),
+                    c.iter().map(|&c| colour_json(c)).collect(),
+                );
             }
             json!({ "mesh": mesh })
         }

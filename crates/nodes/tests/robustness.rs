@@ -18,8 +18,8 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Color, Curve, Mesh, MeshFace, MeshingParameters, Interval, Line, NurbsCurve, OrientedBox, Plane, Point3,
-    Polyline, Sphere, Transform, Vector3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, MeshFace, MeshingParameters,
+    NurbsCurve, OrientedBox, Plane, Point3, Polyline, Sphere, Transform, Vector3,
 };
 use locus_runtime::{
     Branch, DataTree, DataType, NodeCall, NodeRegistry, NodeType, Shared, TreePath, Value,

@@ -18,8 +18,8 @@ use std::fmt;
 use std::sync::Arc;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox, Plane, Point3,
-    Transform, Vector3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox,
+    Plane, Point3, Transform, Vector3,
 };
 
 /// A Rust type that can be stored as an item of a data tree.

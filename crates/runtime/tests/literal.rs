@@ -209,11 +209,7 @@ fn errors_say_what_was_expected() {
             DataType::Point,
             "invalid cast: Boolean → Point",
         ),
-        (
-            "Hue(1, 2, 3)",
-            DataType::Point,
-            "unknown value type `Hue`",
-        ),
+        ("Hue(1, 2, 3)", DataType::Point, "unknown value type `Hue`"),
         (
             "(1, 2, 3, 4, 5)",
             DataType::Generic,
@@ -395,9 +391,21 @@ fn meshes_and_colours_read_and_write_back() {
     let again = parse_literal(&write(&tree), DataType::Mesh).unwrap();
     assert_eq!(again, tree);
     for (text, t, message) in [
-        ("(vertices: [(0, 0, 0)], faces: [(0, 1, 2)])", DataType::Mesh, "names vertex"),
-        ("(vertices: [(0, 0, 0)], faces: [(0, 0)])", DataType::Mesh, "three or four"),
-        ("(vertices: [(0, 0, 0)])", DataType::Mesh, "needs the field `faces`"),
+        (
+            "(vertices: [(0, 0, 0)], faces: [(0, 1, 2)])",
+            DataType::Mesh,
+            "names vertex",
+        ),
+        (
+            "(vertices: [(0, 0, 0)], faces: [(0, 0)])",
+            DataType::Mesh,
+            "three or four",
+        ),
+        (
+            "(vertices: [(0, 0, 0)])",
+            DataType::Mesh,
+            "needs the field `faces`",
+        ),
         ("(r: 256, g: 0, b: 0)", DataType::Colour, "0 to 255"),
         ("\"#GG0000\"", DataType::Colour, "#RRGGBB"),
     ] {
@@ -405,13 +413,19 @@ fn meshes_and_colours_read_and_write_back() {
         assert!(e.message.contains(message), "{text}: {}", e.message);
     }
     for (text, expected) in [
-        ("(r: 255, g: 128, b: 0)", locus_kernel::Color::rgb(255, 128, 0)),
+        (
+            "(r: 255, g: 128, b: 0)",
+            locus_kernel::Color::rgb(255, 128, 0),
+        ),
         ("(1, 2, 3, 4)", locus_kernel::Color::rgba(1, 2, 3, 4)),
         ("\"#80FF0000\"", locus_kernel::Color::rgba(255, 0, 0, 128)),
     ] {
         let tree = parse_literal(text, DataType::Colour).unwrap();
         let v = tree.values().next().flatten();
         assert_eq!(v, Some(Value::Colour(expected)), "{text}");
-        assert_eq!(parse_literal(&write(&tree), DataType::Colour).unwrap(), tree);
+        assert_eq!(
+            parse_literal(&write(&tree), DataType::Colour).unwrap(),
+            tree
+        );
     }
 }

@@ -39,7 +39,12 @@ pub fn colour_rgb() -> NodeType {
             "Creates a colour from alpha, red, green and blue channels, each 0 to 255 \
              (rounded to the nearest whole number). A channel outside 0 to 255 is an error.",
         )
-        .input(channel_port("Alpha", "A", 255.0, "Alpha (opacity), 0 to 255; 255 is opaque."))
+        .input(channel_port(
+            "Alpha",
+            "A",
+            255.0,
+            "Alpha (opacity), 0 to 255; 255 is opaque.",
+        ))
         .input(channel_port("Red", "R", 0.0, "Red, 0 to 255."))
         .input(channel_port("Green", "G", 0.0, "Green, 0 to 255."))
         .input(channel_port("Blue", "B", 0.0, "Blue, 0 to 255."))

@@ -100,8 +100,16 @@ pub fn face_normals() -> NodeType {
              A face of zero area has a null normal and a warning.",
         )
         .input(mesh_input())
-        .output(Port::new("Centers", "C", DataType::Point).list().doc("The face centres."))
-        .output(Port::new("Normals", "N", DataType::Vector).list().doc("The face normals."))
+        .output(
+            Port::new("Centers", "C", DataType::Point)
+                .list()
+                .doc("The face centres."),
+        )
+        .output(
+            Port::new("Normals", "N", DataType::Vector)
+                .list()
+                .doc("The face normals."),
+        )
         .solve(|s| {
             let m: Shared<Mesh> = mesh_item(s, 0)?;
             s.set_list(0, face_centres(&m));
@@ -147,7 +155,9 @@ mod tests {
         assert_clean(&r);
         assert_eq!(only::<f64>(&r, 0), 4.0);
         assert_eq!(only::<Point3>(&r, 1), Point3::new(1.0, 1.0, 0.0));
-        let r = NodeCall::new(&mesh_area()).input(mesh(Mesh::default())).run();
+        let r = NodeCall::new(&mesh_area())
+            .input(mesh(Mesh::default()))
+            .run();
         assert_error(&r, "no area");
     }
 

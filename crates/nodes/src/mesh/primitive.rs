@@ -91,7 +91,9 @@ fn uv_sphere(plane: &Plane, radius: f64, u: i64, v: i64) -> Result<Mesh, NodeErr
         return Err(format!("the radius must be positive, got {radius}").into());
     }
     if u < 3 || v < 2 {
-        return Err(format!("U count must be at least 3 and V count at least 2, got {u} and {v}").into());
+        return Err(
+            format!("U count must be at least 3 and V count at least 2, got {u} and {v}").into(),
+        );
     }
     if u.saturating_mul(v) > MAX_SPHERE_FACES {
         return Err(format!("U × V must be at most {MAX_SPHERE_FACES}, got {u} × {v}").into());
@@ -118,9 +120,18 @@ fn uv_sphere(plane: &Plane, radius: f64, u: i64, v: i64) -> Result<Mesh, NodeErr
     for i in 0..u {
         faces.push(MeshFace::triangle(0, ring(1, i + 1), ring(1, i)));
         for j in 1..v - 1 {
-            faces.push(MeshFace::quad(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i)));
+            faces.push(MeshFace::quad(
+                ring(j, i),
+                ring(j, i + 1),
+                ring(j + 1, i + 1),
+                ring(j + 1, i),
+            ));
         }
-        faces.push(MeshFace::triangle(north, ring(v - 1, i), ring(v - 1, i + 1)));
+        faces.push(MeshFace::triangle(
+            north,
+            ring(v - 1, i),
+            ring(v - 1, i + 1),
+        ));
     }
     let normals = vertices
         .iter()
@@ -145,13 +156,17 @@ mod tests {
             Interval::new(0.0, 4.0),
         );
         let brep = Value::Brep(Shared::new(Brep::from_box(&b).unwrap()));
-        let r = NodeCall::new(&mesh_brep()).input(DataTree::from_value(brep)).run();
+        let r = NodeCall::new(&mesh_brep())
+            .input(DataTree::from_value(brep))
+            .run();
         assert_clean(&r);
         let m = only::<Shared<Mesh>>(&r, 0);
         assert!(m.is_closed_and_oriented());
         assert!((m.volume() - 24.0).abs() < 1e-12);
         // A box wired in is meshed as its B-rep.
-        let r = NodeCall::new(&mesh_brep()).input(DataTree::from_value(Value::Box(b))).run();
+        let r = NodeCall::new(&mesh_brep())
+            .input(DataTree::from_value(Value::Box(b)))
+            .run();
         assert!((only::<Shared<Mesh>>(&r, 0).area() - 52.0).abs() < 1e-12);
         // Not geometry: a cast error on the input.
         let r = NodeCall::new(&mesh_brep())

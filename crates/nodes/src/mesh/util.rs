@@ -42,7 +42,11 @@ pub fn mesh_join() -> NodeType {
              those of the meshes before it (vertices are not welded). Vertex normals and \
              colours are kept only when every mesh has them. Nulls are skipped.",
         )
-        .input(Port::new("Meshes", "M", DataType::Mesh).list().doc("The meshes to join."))
+        .input(
+            Port::new("Meshes", "M", DataType::Mesh)
+                .list()
+                .doc("The meshes to join."),
+        )
         .output(Port::new("Mesh", "M", DataType::Mesh).doc("The joined mesh."))
         .solve(|s| {
             let meshes = s.list::<Shared<Mesh>>(0)?;
@@ -77,7 +81,9 @@ mod tests {
     #[test]
     fn flip_reverses_faces() {
         let r = NodeCall::new(&flip_mesh())
-            .input(DataTree::from_value(Value::Mesh(Shared::new(triangle(0.0)))))
+            .input(DataTree::from_value(Value::Mesh(Shared::new(triangle(
+                0.0,
+            )))))
             .run();
         assert_clean(&r);
         let m = only::<Shared<Mesh>>(&r, 0);

@@ -133,7 +133,9 @@ mod tests {
             locus_kernel::Interval::UNIT,
             locus_kernel::Interval::UNIT,
         );
-        let r = NodeCall::new(&mesh()).input(DataTree::from_value(Value::Box(b))).run();
+        let r = NodeCall::new(&mesh())
+            .input(DataTree::from_value(Value::Box(b)))
+            .run();
         let m = only::<locus_runtime::Shared<locus_kernel::Mesh>>(&r, 0);
         assert!(m.is_closed_and_oriented());
         let r = NodeCall::new(&mesh())

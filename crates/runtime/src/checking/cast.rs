@@ -17,8 +17,8 @@ use std::borrow::Cow;
 use std::fmt;
 
 use locus_kernel::{
-    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox, Plane, Point3,
-    Vector3,
+    Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox,
+    Plane, Point3, Vector3,
 };
 
 use crate::checking::cast_geometry::{

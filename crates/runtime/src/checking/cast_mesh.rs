@@ -88,9 +88,15 @@ mod tests {
     #[test]
     fn colours_read_from_text_and_integers() {
         assert_eq!(text_to_colour("#FF8000"), Some(Color::rgb(255, 128, 0)));
-        assert_eq!(text_to_colour("#40FF8000"), Some(Color::rgba(255, 128, 0, 64)));
+        assert_eq!(
+            text_to_colour("#40FF8000"),
+            Some(Color::rgba(255, 128, 0, 64))
+        );
         assert_eq!(text_to_colour("255, 128, 0"), Some(Color::rgb(255, 128, 0)));
-        assert_eq!(text_to_colour("64,255,128,0"), Some(Color::rgba(255, 128, 0, 64)));
+        assert_eq!(
+            text_to_colour("64,255,128,0"),
+            Some(Color::rgba(255, 128, 0, 64))
+        );
         assert_eq!(text_to_colour("256,0,0"), None);
         assert_eq!(text_to_colour("red"), None);
         assert_eq!(integer_to_colour(&-16777216), Some(Color::BLACK));

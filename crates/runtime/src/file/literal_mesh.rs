@@ -94,9 +94,11 @@ fn index(node: &Node) -> Result<u32, LiteralError> {
 
 fn face(node: &Node) -> Result<MeshFace, LiteralError> {
     match &node.kind {
-        Kind::Tuple(None, v) if v.len() == 3 => {
-            Ok(MeshFace::triangle(index(&v[0])?, index(&v[1])?, index(&v[2])?))
-        }
+        Kind::Tuple(None, v) if v.len() == 3 => Ok(MeshFace::triangle(
+            index(&v[0])?,
+            index(&v[1])?,
+            index(&v[2])?,
+        )),
         Kind::Tuple(None, v) if v.len() == 4 => Ok(MeshFace::quad(
             index(&v[0])?,
             index(&v[1])?,
@@ -117,7 +119,12 @@ fn face(node: &Node) -> Result<MeshFace, LiteralError> {
 /// Reads a mesh literal.
 pub(crate) fn mesh(node: &Node) -> Result<Mesh, LiteralError> {
     let f = fields(node, DataType::Mesh)?;
-    check_fields(node, f, "a mesh", &["vertices", "faces", "normals", "colours"])?;
+    check_fields(
+        node,
+        f,
+        "a mesh",
+        &["vertices", "faces", "normals", "colours"],
+    )?;
     let need = |name: &str| {
         get(f, name).map_or_else(
             || error(node, format!("a mesh needs the field `{name}`")),
@@ -173,7 +180,10 @@ fn channel(node: &Node) -> Result<u8, LiteralError> {
         }),
         _ => error(
             node,
-            format!("expected a colour channel 0 to 255, found {}", node.describe()),
+            format!(
+                "expected a colour channel 0 to 255, found {}",
+                node.describe()
+            ),
         ),
     }
 }
@@ -211,7 +221,12 @@ pub(crate) fn colour(node: &Node) -> Result<Color, LiteralError> {
         }
         Kind::Tuple(None, v) if v.len() == 3 || v.len() == 4 => {
             let a = if v.len() == 4 { channel(&v[3])? } else { 255 };
-            Ok(Color::rgba(channel(&v[0])?, channel(&v[1])?, channel(&v[2])?, a))
+            Ok(Color::rgba(
+                channel(&v[0])?,
+                channel(&v[1])?,
+                channel(&v[2])?,
+                a,
+            ))
         }
         Kind::Str(s) => parse_hex_colour(s).map_or_else(
             || {
@@ -257,7 +272,11 @@ fn field(name: &str, value: Node) -> Field {
 
 fn colour_node(c: Color) -> Node {
     let int = |x: u8| Node::new(Kind::Number(x.to_string()));
-    let mut fields = vec![field("r", int(c.r)), field("g", int(c.g)), field("b", int(c.b))];
+    let mut fields = vec![
+        field("r", int(c.r)),
+        field("g", int(c.g)),
+        field("b", int(c.b)),
+    ];
     if c.a != 255 {
         fields.push(field("a", int(c.a)));
     }
@@ -276,14 +295,25 @@ pub(crate) fn node(value: &Value) -> Option<Node> {
             let faces = m
                 .faces()
                 .iter()
-                .map(|f| Node::new(Kind::Tuple(None, f.corners().iter().map(|&i| index(i)).collect())))
+                .map(|f| {
+                    Node::new(Kind::Tuple(
+                        None,
+                        f.corners().iter().map(|&i| index(i)).collect(),
+                    ))
+                })
                 .collect();
             let mut fields = vec![
-                field("vertices", triples(m.vertices().iter().map(|p| p.to_array()).collect())),
+                field(
+                    "vertices",
+                    triples(m.vertices().iter().map(|p| p.to_array()).collect()),
+                ),
                 field("faces", Node::new(Kind::List(faces))),
             ];
             if let Some(n) = m.normals() {
-                fields.push(field("normals", triples(n.iter().map(|v| v.to_array()).collect())));
+                fields.push(field(
+                    "normals",
+                    triples(n.iter().map(|v| v.to_array()).collect()),
+                ));
             }
             if let Some(c) = m.colors() {
                 fields.push(field(
