@@ -11,8 +11,13 @@
 //!
 //! | benchmark | result |
 //! | --- | --- |
-//! | `mesh/wave_100x100/mesh` | see the commit that added this benchmark |
-//! | `mesh/sphere/mesh` | see the commit that added this benchmark |
+//! | `mesh/wave_100x100/mesh` | 20.0 K triangles in 750 ms: 27 K triangles/s |
+//! | `mesh/wave_100x100/baseline_points_on_grid` | 1.16 ms: meshing costs 650× evaluation |
+//! | `mesh/sphere/mesh` | 11.4 K triangles in 111 ms: 103 K triangles/s |
+//! | `mesh/sphere/baseline_points_on_grid` | 0.32 ms: meshing costs 350× evaluation |
+//!
+//! The sampling (normals along up to 65 isocurves per direction) dominates; it is the first
+//! thing to make faster.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use locus_kernel::{Brep, Mesh, MeshingParameters, NurbsSurface, Point3, Sphere};
@@ -57,13 +62,13 @@ fn bench_one(c: &mut Criterion, name: &str, brep: &Brep, surface: &NurbsSurface)
     group.throughput(Throughput::Elements(triangles));
     group.sample_size(10);
     group.bench_function("mesh", |b| {
-        b.iter(|| black_box(Mesh::from_brep(black_box(brep), &parameters).unwrap()))
+        b.iter(|| black_box(Mesh::from_brep(black_box(brep), &parameters).unwrap()));
     });
     group.bench_function("baseline_points_on_grid", |b| {
         b.iter(|| {
             surface.points_on_grid(&us, &vs, &mut out).unwrap();
             black_box(&out);
-        })
+        });
     });
     group.finish();
 }

@@ -14,7 +14,7 @@ use crate::file::literal::{error, mismatch, number, number_node, numbers_node};
 use crate::file::syntax::{Field, Kind, Node};
 use crate::{DataType, LiteralError, Shared, Value};
 
-fn fields<'a>(node: &'a Node, data_type: DataType) -> Result<&'a [Field], LiteralError> {
+fn fields(node: &Node, data_type: DataType) -> Result<&[Field], LiteralError> {
     match &node.kind {
         Kind::Struct(None, fields) => Ok(fields),
         _ => mismatch(node, data_type),
