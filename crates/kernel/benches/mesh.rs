@@ -11,8 +11,13 @@
 //!
 //! | benchmark | result |
 //! | --- | --- |
-//! | `mesh/wave_100x100/mesh` | see the commit that added this benchmark |
-//! | `mesh/sphere/mesh` | see the commit that added this benchmark |
+//! | `mesh/wave_100x100/mesh` | 20.0 K triangles in 750 ms: 27 K triangles/s |
+//! | `mesh/wave_100x100/baseline_points_on_grid` | 1.16 ms: meshing costs 650× evaluation |
+//! | `mesh/sphere/mesh` | 11.4 K triangles in 111 ms: 103 K triangles/s |
+//! | `mesh/sphere/baseline_points_on_grid` | 0.32 ms: meshing costs 350× evaluation |
+//!
+//! The sampling (normals along up to 65 isocurves per direction) dominates; it is the first
+//! thing to make faster.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use locus_kernel::{Brep, Mesh, MeshingParameters, NurbsSurface, Point3, Sphere};
