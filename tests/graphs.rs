@@ -85,7 +85,8 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
         }
 
         let (serial, serial_dump) = evaluate(&document, &registry, 1);
-        let (_, parallel_dump) = evaluate(&document, &registry, 0);
+        let all = std::thread::available_parallelism().map_or(2, |n| n.get().max(2));
+        let (_, parallel_dump) = evaluate(&document, &registry, all);
         if serial_dump != parallel_dump {
             failures.push(format!("{name}: one thread and all threads differ"));
         }

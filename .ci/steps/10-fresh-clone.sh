@@ -3,10 +3,10 @@
 # clone the committed repository into an empty temporary folder (no ../shared next to it) and
 # run `cargo test --workspace` there. The build reuses this checkout's target folder
 # (CARGO_TARGET_DIR) so that only what the clone changes is rebuilt, and it is bounded by
-# FRESH_CLONE_TIMEOUT seconds (default 900).
+# FRESH_CLONE_TIMEOUT seconds (default 2400).
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/../.." && pwd)"
-limit="${FRESH_CLONE_TIMEOUT:-900}"
+limit="${FRESH_CLONE_TIMEOUT:-2400}"
 scratch="$(mktemp -d "${TMPDIR:-/tmp}/locus-fresh-clone.XXXXXX")"
 trap 'rm -rf "$scratch"' EXIT
 # The clone sits alone in its own folder: neither it nor any folder above the temporary root

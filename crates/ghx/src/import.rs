@@ -457,6 +457,32 @@ impl Mapper<'_> {
         {
             node.settings
                 .push(("expression".to_owned(), Literal(literal::text(formula))));
+            // A formula the node's own prepare step cannot read (Grasshopper syntax locus does
+            // not have, such as `•` or `[d1]`) disables the node, so that the rest of the
+            // definition still checks and runs; downstream nodes get no data from it.
+            if let Some(prepare) = &node_type.prepare {
+                let settings = [(
+                    "expression".to_owned(),
+                    locus_runtime::Value::Text(formula.to_owned()),
+                )];
+                let config = locus_runtime::NodeConfig {
+                    settings: &settings,
+                    inputs: &resolved,
+                };
+                if let Err(e) = prepare(&config) {
+                    node.disabled = true;
+                    self.diag(
+                        Level::Warning,
+                        "unsupported-expression",
+                        format!(
+                            "{r}: the formula \"{formula}\" does not read in locus ({e}); the node is disabled"
+                        ),
+                        Some(r.clone()),
+                        None,
+                        None,
+                    );
+                }
+            }
         }
         let mut note = format!("{} \"{}\"", o.type_name, o.nickname);
         if o.disabled {

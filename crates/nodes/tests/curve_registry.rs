@@ -1,7 +1,7 @@
 //! Every Curve node and the Curve parameter are registered under their ids, and the Curve
 //! category holds no node that is not listed here.
 
-use locus_nodes::curve::{analysis, division, primitive, spline, util};
+use locus_nodes::curve::{analysis, division, primitive, primitive_more, spline, util};
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
 
@@ -33,6 +33,14 @@ fn curve_ids_are_registered() {
         division::SHATTER,
         util::FLIP_CURVE,
         util::SPLIT_CURVE,
+        primitive_more::LINE_SDL,
+        primitive_more::CIRCLE_CNR,
+        primitive_more::CIRCLE_3PT,
+        primitive_more::ARC_3PT,
+        primitive_more::ARC_SED,
+        primitive_more::POLYGON,
+        primitive_more::RECTANGLE,
+        primitive_more::CURVE_MIDDLE,
     ];
     for id in ids {
         let t = registry

@@ -221,7 +221,7 @@ fn every_structural_problem_is_reported() {
         read_errors(text),
         [
             "4:5: error: unknown field `colour` in the graph (fields: format, name, description, \
-             nodes, wires, inputs, outputs, expected)",
+             nodes, wires, inputs, outputs, expected, expected_messages)",
             "3:11: error: expected a string in quotes for `name`, found 3",
             "6:41: error: unknown field `size` in a node (fields: id, type, inputs, values, \
              settings, modifiers, matching, disabled)",
