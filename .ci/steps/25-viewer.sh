@@ -14,7 +14,7 @@ cargo build --quiet --bin locus
 out="$PWD/target/artifacts/viewer"
 mkdir -p "$out"
 pages=()
-for graph in tangent_spheres exploded_box face_direction; do
+for graph in tangent_spheres exploded_box; do
   ./target/debug/locus view "graphs/$graph.ron" -o "$out/$graph.html" > /dev/null
   pages+=("$out/$graph.html")
 done
