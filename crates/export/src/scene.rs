@@ -130,6 +130,7 @@ fn fill(object: &mut SceneObject, value: &Value, settings: &Tessellation) -> Res
                 .push(vec![p.origin + p.x_axis, p.origin, p.origin + p.y_axis]);
         }
         Value::Surface(s) => object.mesh = Some(tessellate::surface(s, settings)?),
+        Value::Mesh(m) => object.mesh = Some((**m).clone()),
         Value::Box(b) => {
             let brep = locus_kernel::Brep::from_box(b).map_err(|e| e.to_string())?;
             object.mesh = Some(tessellate::brep(&brep, settings)?);
