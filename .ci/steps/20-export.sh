@@ -4,7 +4,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 (cd crates/export/e2e && npm ci --no-audit --no-fund --loglevel=error)
-cargo build --quiet --bin locus
+# What `cargo test --workspace` built (the locus binary, the examples) with the same profile and
+# features, so nothing is built a second time: a no-op after the test command.
+cargo test --workspace --no-run --quiet
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 files=()

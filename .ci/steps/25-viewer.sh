@@ -10,7 +10,9 @@ if ! command -v chromium > /dev/null; then
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium > /dev/null
 fi
 (cd crates/export/e2e && npm ci --no-audit --no-fund --loglevel=error)
-cargo build --quiet --bin locus
+# What `cargo test --workspace` built (the locus binary, the examples) with the same profile and
+# features, so nothing is built a second time: a no-op after the test command.
+cargo test --workspace --no-run --quiet
 out="$PWD/target/artifacts/viewer"
 mkdir -p "$out"
 pages=()

@@ -14,7 +14,9 @@ if ! "$VENV/bin/python" -c "import rhino3dm, pytest" 2>/dev/null; then
   fi
   "$VENV/bin/pip" install --quiet --disable-pip-version-check "rhino3dm>=8.9,<9" "pytest>=8,<10"
 fi
-cargo build --quiet -p locus-opennurbs-archive --example archive_json
+# What `cargo test --workspace` built (the locus binary, the examples) with the same profile and
+# features, so nothing is built a second time: a no-op after the test command.
+cargo test --workspace --no-run --quiet
 export LOCUS_ARCHIVE_JSON="$PWD/target/debug/examples/archive_json"
 cd crates/opennurbs-archive/e2e
 timeout 600 "$VENV/bin/python" -m pytest -q -p no:cacheprovider .

@@ -17,9 +17,9 @@ if ! "$VENV/bin/python" -c "import compute_rhino3d, rhino3dm, pytest, requests" 
   "$VENV/bin/pip" install --quiet --disable-pip-version-check \
     "compute-rhino3d==0.12.2" "rhino3dm>=8.9,<9" "pytest>=8,<10" "requests>=2,<3"
 fi
-# The test profile (opt-level 1) shares what `cargo test --workspace` built before this step.
-cargo build --quiet --profile test --bin locus
-cargo build --quiet --profile test -p locus-server --example loadtest
+# What `cargo test --workspace` built (the locus binary, the examples) with the same profile and
+# features, so nothing is built a second time: a no-op after the test command.
+cargo test --workspace --no-run --quiet
 LOCUS="$PWD/target/debug/locus"
 LOADTEST="$PWD/target/debug/examples/loadtest"
 
