@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The viewer page of `locus view` in headless Chromium (Debian's package, driven by
 # playwright-core from npm): loads without console errors or network requests, holds the
-# expected objects, and draws a picture that is not blank. Screenshots are kept as artifacts
+# expected objects, lists the glTF's outputs in its panel, reports the output, path and index of
+# an object clicked, and draws a picture that is not blank. Screenshots are kept as artifacts
 # in target/artifacts/viewer/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."

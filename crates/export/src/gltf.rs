@@ -1,8 +1,9 @@
 //! glTF 2.0 export (`.glb` binary and `.gltf` with an embedded buffer), written with the
 //! `gltf` crate's JSON model so that the document's schema is the crate's, not ours.
 //!
-//! Layout: one root node `locus`, one child node per output, one child per branch (named by its
-//! path, `{0;1}`), one child per item (named `output {0;1}[2]`) holding a mesh whose primitives
+//! Layout: one root node [`ROOT_NODE_NAME`] (`locus-root`; the scene is [`SCENE_NAME`],
+//! `locus`, and a lookup by name must find the node, not the scene), one child node per output,
+//! one child per branch (named by its path, `{0;1}`), one child per item (named `output {0;1}[2]`) holding a mesh whose primitives
 //! are the item's triangles (with normals and colours), line strips and points. Every item node
 //! carries `{"output", "path", "index", "value"}` in its `extras`.
 //!
@@ -17,6 +18,14 @@ use std::collections::BTreeMap;
 use gltf::json::{self, validation::Checked::Valid, validation::USize64};
 use locus_kernel::{Color, Mesh, Point3, Vector3};
 use serde_json::json;
+
+/// The name of the glTF scene.
+pub const SCENE_NAME: &str = "locus";
+
+/// The name of the root node, the parent of one node per output. It differs from
+/// [`SCENE_NAME`] so that a lookup by name (three.js's `getObjectByName`, which looks at the
+/// scene first) finds the node.
+pub const ROOT_NODE_NAME: &str = "locus-root";
 
 use crate::ExportError;
 use crate::scene::{Scene, SceneObject};
@@ -358,7 +367,7 @@ fn build(scene: &Scene, options: &GltfOptions) -> Result<(json::Root, Vec<u8>), 
         }));
     }
     let top = b.root.push(json::Node {
-        name: Some("locus".into()),
+        name: Some(ROOT_NODE_NAME.into()),
         children: (!output_nodes.is_empty()).then_some(output_nodes),
         translation: Some(to_gltf(origin, Point3::ORIGIN)),
         ..Default::default()
@@ -374,7 +383,7 @@ fn build(scene: &Scene, options: &GltfOptions) -> Result<(json::Root, Vec<u8>), 
     let scene_index = b.root.push(json::Scene {
         extensions: None,
         extras: Some(serde_json::value::to_raw_value(&extras).expect("JSON")),
-        name: Some("locus".into()),
+        name: Some(SCENE_NAME.into()),
         nodes: vec![top],
     });
     b.root.scene = Some(scene_index);

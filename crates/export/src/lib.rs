@@ -29,7 +29,10 @@ mod viewer;
 
 use std::path::Path;
 
-pub use crate::gltf::{DEFAULT_MESH_COLOR, DEFAULT_WIRE_COLOR, GltfOptions, to_glb, to_gltf_text};
+pub use crate::gltf::{
+    DEFAULT_MESH_COLOR, DEFAULT_WIRE_COLOR, GltfOptions, ROOT_NODE_NAME, SCENE_NAME, to_glb,
+    to_gltf_text,
+};
 pub use crate::obj::to_obj;
 pub use crate::raster::{MAX_PICTURE_SIDE, PictureOptions, drawn_extent, render, render_png};
 pub use crate::scene::{Scene, SceneObject};

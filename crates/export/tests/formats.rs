@@ -34,7 +34,7 @@ fn read_glb(bytes: &[u8]) -> (usize, usize, usize, BoundingBox, Vec<serde_json::
     let root = gltf
         .document
         .nodes()
-        .find(|n| n.name() == Some("locus"))
+        .find(|n| n.name() == Some(locus_export::ROOT_NODE_NAME))
         .unwrap();
     let t = root.transform().decomposed().0;
     let origin = Point3::new(f64::from(t[0]), -f64::from(t[2]), f64::from(t[1]));

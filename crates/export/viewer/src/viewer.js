@@ -7,7 +7,10 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
-const state = { ready: false, objectCount: 0, errors: [], selected: null };
+// The page's state, read by the end-to-end test (crates/export/e2e/viewer.mjs): whether the
+// scene is loaded, how many item objects it holds, errors, the selected item's extras, and
+// `probes()`, a point on screen for each item in view.
+const state = { ready: false, objectCount: 0, errors: [], selected: null, probes: () => [] };
 window.locusViewer = state;
 
 function base64ToBuffer(text) {
@@ -73,6 +76,7 @@ function start() {
     controls.update();
     buildPanel(root, data, draw);
     state.objectCount = countItems(root);
+    state.probes = () => probes(root, camera, renderer.domElement);
     resize();
     state.ready = true;
     document.body.dataset.ready = 'true';
@@ -105,6 +109,39 @@ function countItems(root) {
   return n;
 }
 
+// For each item in view, a point in client pixels that lies on it: the centroid of its first
+// triangle, the midpoint of its first line segment, or its first point, whichever it has first.
+function probes(root, camera, canvas) {
+  const rect = canvas.getBoundingClientRect();
+  const res = [];
+  root.updateMatrixWorld(true);
+  root.traverse((o) => {
+    if (!(o.userData && o.userData.index !== undefined)) return;
+    let p = null;
+    o.traverse((g) => {
+      if (p || !g.geometry || !g.geometry.attributes.position) return;
+      const pos = g.geometry.attributes.position;
+      const index = g.geometry.index;
+      const at = (i) => new THREE.Vector3().fromBufferAttribute(pos, index ? index.getX(i) : i);
+      if (g.isMesh && (index ? index.count : pos.count) >= 3) p = at(0).add(at(1)).add(at(2)).divideScalar(3);
+      else if (g.isLine && pos.count >= 2) p = at(0).add(at(1)).multiplyScalar(0.5);
+      else if (g.isPoints && pos.count >= 1) p = at(0);
+      if (p) p.applyMatrix4(g.matrixWorld);
+    });
+    if (!p) return;
+    const ndc = p.project(camera);
+    if (Math.abs(ndc.x) > 1 || Math.abs(ndc.y) > 1 || Math.abs(ndc.z) > 1) return;
+    res.push({
+      x: rect.left + ((ndc.x + 1) / 2) * rect.width,
+      y: rect.top + ((1 - ndc.y) / 2) * rect.height,
+      output: o.userData.output,
+      path: o.userData.path,
+      index: o.userData.index,
+    });
+  });
+  return res;
+}
+
 function select(info) {
   state.selected = info;
   const box = document.getElementById('selection');
@@ -114,7 +151,8 @@ function select(info) {
 // The panel: one toggle per output and per branch, then the messages per node.
 function buildPanel(root, data, draw) {
   const panel = document.getElementById('outputs');
-  const top = root.getObjectByName('locus') || root;
+  // The root node is `locus-root`; the scene itself is named `locus` (crates/export/src/gltf.rs).
+  const top = root.getObjectByName('locus-root') || root;
   for (const output of top.children) {
     const toggle = el('input', { type: 'checkbox', checked: '' });
     toggle.checked = true;
