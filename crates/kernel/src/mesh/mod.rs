@@ -5,13 +5,20 @@
 //! openNURBS's `ON_MeshFace` does, so that faces are one fixed-size array and a mesh converts to
 //! and from Rhino's without copying face by face.
 
+mod closest;
+mod grid;
 mod measure;
 pub(crate) mod parameters;
 mod polyline;
 mod sampling;
 mod tessellate;
+mod weld;
 
 use std::collections::HashMap;
+
+pub use closest::MeshPoint;
+pub use grid::GRID_COINCIDENT_DISTANCE;
+pub use weld::WELD_DISTANCE;
 
 use crate::{BoundingBox, Error, Point3, Result, Transform, Vector3};
 

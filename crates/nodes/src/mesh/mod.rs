@@ -1,12 +1,18 @@
 //! Grasshopper's Mesh category: turning B-reps into meshes and mesh primitives
-//! ([`primitive`]), measuring meshes ([`analysis`]) and editing them ([`util`]).
+//! ([`primitive`], with meshing [`settings`]), meshes from and to their parts ([`construct`]),
+//! grids of quads on planes, boxes and surfaces ([`grid`]), measuring meshes ([`analysis`],
+//! [`faces`]) and editing them ([`util`]).
 //!
 //! Meshes are the kernel's [`locus_kernel::Mesh`]: triangles and quads with optional vertex
 //! normals and colours. B-reps, surfaces and boxes wired into a Mesh port are meshed with the
 //! kernel's default [`locus_kernel::MeshingParameters`], as Grasshopper meshes them.
 
 pub mod analysis;
+pub mod construct;
+pub mod faces;
+pub mod grid;
 pub mod primitive;
+pub mod settings;
 pub mod util;
 
 use locus_runtime::{NodeError, NodeRegistry, NodeType, Shared, Solve};
@@ -16,8 +22,12 @@ use locus_kernel::Mesh;
 /// Registers every Mesh node.
 pub fn register(registry: &mut NodeRegistry) {
     primitive::register(registry);
+    construct::register(registry);
+    grid::register(registry);
     analysis::register(registry);
+    faces::register(registry);
     util::register(registry);
+    settings::register(registry);
 }
 
 /// A node of the Mesh category.

@@ -5,6 +5,7 @@ use locus_kernel::{Mesh, MeshFace, MeshingParameters, Plane, Point3};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
 
 use super::mesh_node;
+use super::settings::parse_settings;
 use crate::surface::brep::brep_item;
 
 /// Id of [`mesh_brep`].
@@ -26,20 +27,28 @@ pub fn mesh_brep() -> NodeType {
     mesh_node(MESH_BREP, "Mesh Brep", "Mesh", "Util")
         .gh_guid("60e7defa-8b21-4ee1-99aa-a9223d6134ff")
         .description(
-            "Creates a mesh that approximates a B-rep with the default meshing parameters \
-             (maximum angle between neighbouring normals 3.5°, no chord or edge-length \
-             limit, minimum edge length 1e-4): one mesh for all faces, with vertices shared \
-             along the edges so that a closed B-rep gives a closed, consistently oriented \
-             mesh with normals pointing out. Poles and apexes become fans of triangles. \
-             Grasshopper's Settings input (custom meshing parameters) is not available yet.",
+            "Creates a mesh that approximates a B-rep, with the Settings of a settings node \
+             (Settings (Custom), Settings (Speed), Settings (Quality)) or by default the \
+             kernel's default meshing parameters (maximum angle between neighbouring normals \
+             3.5°, no chord or edge-length limit, minimum edge length 1e-4): one mesh for all \
+             faces, with vertices shared along the edges so that a closed B-rep gives a \
+             closed, consistently oriented mesh with normals pointing out. Poles and apexes \
+             become fans of triangles.",
         )
         .input(Port::new("Brep", "B", DataType::Brep).doc(
             "The B-rep to mesh. Boxes and surfaces are taken as B-reps (six faces, one face).",
         ))
+        .input(Port::new("Settings", "S", DataType::Text).optional().doc(
+            "The meshing settings (the text a settings node makes); the defaults when absent.",
+        ))
         .output(Port::new("Mesh", "M", DataType::Mesh).doc("The mesh of the B-rep."))
         .solve(|s| {
             let brep = brep_item(s, 0)?;
-            let mesh = Mesh::from_brep(&brep, &MeshingParameters::default())?;
+            let parameters = match s.item_opt::<String>(1) {
+                Some(text) => parse_settings(text).map_err(|e| format!("settings: {e}"))?,
+                None => MeshingParameters::default(),
+            };
+            let mesh = Mesh::from_brep(&brep, &parameters)?;
             s.set(0, Shared::new(mesh));
             Ok(())
         })
@@ -168,6 +177,25 @@ mod tests {
             .input(DataTree::from_value(Value::Box(b)))
             .run();
         assert!((only::<Shared<Mesh>>(&r, 0).area() - 52.0).abs() < 1e-12);
+        // Coarser settings give fewer faces on a sphere; bad settings are an error.
+        let sphere = locus_kernel::Sphere::new(Point3::ORIGIN, 1.0).unwrap();
+        let sphere = Value::Brep(Shared::new(
+            Brep::from_surface(sphere.to_nurbs().unwrap()).unwrap(),
+        ));
+        let with = |settings: &str| {
+            NodeCall::new(&mesh_brep())
+                .input(DataTree::from_value(sphere.clone()))
+                .input(DataTree::from_value(Value::Text(settings.into())))
+                .run()
+        };
+        let coarse = only::<Shared<Mesh>>(&with("max_angle=0.35"), 0)
+            .faces()
+            .len();
+        let fine = only::<Shared<Mesh>>(&with("max_angle=0.1"), 0)
+            .faces()
+            .len();
+        assert!(coarse < fine, "{coarse} {fine}");
+        assert_error(&with("max_angle=-1"), "settings: meshing maximum angle");
         // Not geometry: a cast error on the input.
         let r = NodeCall::new(&mesh_brep())
             .input(DataTree::from_value(Value::Number(1.0)))
