@@ -32,6 +32,10 @@ pub(crate) struct RunLimits {
     /// limit).
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_OUTPUT_BYTES)]
     max_output_bytes: u64,
+    /// Show no progress bar (one is drawn on stderr, when it is a terminal, for runs longer
+    /// than a second).
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 impl RunLimits {
@@ -146,6 +150,7 @@ pub(crate) fn prepared(
             return Err(EXIT_USAGE);
         }
     };
+    crate::progress::attach(&mut evaluator, run_limits.quiet);
     match run_limits.limits() {
         Ok(limits) => evaluator.set_limits(limits),
         Err(e) => {

@@ -30,6 +30,7 @@ mod export;
 mod fmt;
 mod graph_file;
 mod grasshopper;
+mod progress;
 mod render;
 mod serve;
 mod test_graphs;

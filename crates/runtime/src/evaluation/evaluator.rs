@@ -14,6 +14,7 @@ use rayon::prelude::*;
 
 use crate::evaluation::collect;
 use crate::evaluation::iterate::{NodeLimit, NodeOutput, NodeRun, run_node};
+use crate::evaluation::progress::{Progress, ProgressHook, Tracker};
 use crate::limits::{Budget, Watch, thread_cap};
 use crate::{DataTree, Level, LimitHit, Limits, Message, NodeError, NodeId, Plan, Prepared};
 
@@ -104,6 +105,8 @@ pub struct Evaluator {
     /// For each node, the entries (items plus branches) its outputs hold, and their sum.
     held: Vec<usize>,
     held_total: usize,
+    /// The observer told of each evaluation's progress, if any.
+    progress: Option<ProgressHook>,
 }
 
 impl Evaluator {
@@ -166,7 +169,14 @@ impl Evaluator {
             not_run: Vec::new(),
             held: vec![0; n],
             held_total: 0,
+            progress: None,
         }
+    }
+
+    /// Tells `observer` of the progress of the next evaluations (nodes started and finished),
+    /// or no one for `None`.
+    pub fn set_progress(&mut self, observer: Option<Arc<dyn Progress>>) {
+        self.progress = observer.map(ProgressHook);
     }
 
     /// Sets the limits of the next evaluations (time, cancellation, item budget).
@@ -345,6 +355,8 @@ impl Evaluator {
         self.limit_hit = None;
         self.not_run.clear();
         self.last_run.clear();
+        let hook = self.progress.clone();
+        let tracker = Tracker::start(hook.as_ref(), dirty.len());
         for (w, wave) in waves.iter().enumerate() {
             if wave.is_empty() {
                 continue;
@@ -359,14 +371,14 @@ impl Evaluator {
                 // reused for the new ones (no node reads its own outputs).
                 self.release(i);
             }
+            let run = |i: usize| {
+                let id = self.plan.nodes[i].id.0.as_str();
+                (i, tracker.node(id, || self.run(i, parallel, &budget)))
+            };
             let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
-                wave.par_iter()
-                    .map(|&i| (i, self.run(i, parallel, &budget)))
-                    .collect()
+                wave.par_iter().map(|&i| run(i)).collect()
             } else {
-                wave.iter()
-                    .map(|&i| (i, self.run(i, parallel, &budget)))
-                    .collect()
+                wave.iter().map(|&i| run(i)).collect()
             };
             self.last_run.extend_from_slice(wave);
             let mut stopped = None;
@@ -778,6 +790,39 @@ mod tests {
         e.evaluate();
         assert_eq!(numbers(e.output("sum").unwrap()), [111.0, 112.0]);
         assert_eq!(e.last_run().len(), 5);
+    }
+
+    #[test]
+    fn the_progress_observer_sees_every_node_run() {
+        #[derive(Default)]
+        struct Log(std::sync::Mutex<Vec<String>>);
+        impl Progress for Log {
+            fn started(&self, total: usize) {
+                self.0.lock().unwrap().push(format!("start {total}"));
+            }
+            fn node_finished(&self, node: &str, done: usize, total: usize) {
+                self.0
+                    .lock()
+                    .unwrap()
+                    .push(format!("{node} {done}/{total}"));
+            }
+            fn finished(&self) {
+                self.0.lock().unwrap().push("end".into());
+            }
+        }
+        let log = Arc::new(Log::default());
+        let mut e = Evaluator::new(plan());
+        e.set_threads(1).unwrap();
+        e.set_progress(Some(log.clone()));
+        e.evaluate();
+        // Waves by depth: a, b, c, then sum1, then sum2; after c changes, c and sum2 run.
+        e.set_input("c", DataTree::from_item(1000.0)).unwrap();
+        e.evaluate();
+        let expected = [
+            "start 5", "a 1/5", "b 2/5", "c 3/5", "sum1 4/5", "sum2 5/5", "end", "start 2",
+            "c 1/2", "sum2 2/2", "end",
+        ];
+        assert_eq!(*log.0.lock().unwrap(), expected);
     }
 
     #[test]
