@@ -24,7 +24,11 @@ const ROWS: usize = 1000;
 
 fn scene() -> Scene {
     let mesh = Mesh::quad_grid(COLUMNS, ROWS, |i, j| {
-        Point3::new(i as f64 * 0.01, j as f64 * 0.01, ((i + j) % 7) as f64 * 0.001)
+        Point3::new(
+            i as f64 * 0.01,
+            j as f64 * 0.01,
+            ((i + j) % 7) as f64 * 0.001,
+        )
     })
     .expect("grid")
     .with_computed_normals();
