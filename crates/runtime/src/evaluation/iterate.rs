@@ -8,7 +8,9 @@
 //! 3. Within a branch, item-access inputs are matched item by item with the node's
 //!    [`Matching`]: longest list (shorter lists repeat their last item), shortest list, or cross
 //!    reference (every combination, the first input varying fastest). List-access inputs see
-//!    the whole branch.
+//!    the whole branch; under cross reference a list input's branch is one more wheel of the
+//!    odometer (each of its branches meets every item combination), and only the other
+//!    inputs' branches are paired.
 //! 4. Outputs go to the path of the *principal* input (marked, else the only input, else the
 //!    most complex one, ties to the first). When the principal input runs out of branches its
 //!    last path is reused with its last index offset by 1, 2, … (the collision offset).
@@ -83,6 +85,9 @@ struct BranchIteration<'a> {
     branches: Vec<Option<&'a Branch>>,
     lengths: Vec<usize>,
     count: usize,
+    /// Under cross reference, the list inputs that step their branch inside the odometer,
+    /// with all their branches (reference §2.2).
+    steps: Vec<(usize, &'a [(TreePath, Branch)])>,
 }
 
 /// A contiguous range of iterations within one branch iteration.
@@ -342,8 +347,10 @@ fn run_task(
         })
         .collect();
     let mut messages: Vec<RawMessage> = Vec::new();
-    let item_inputs: Vec<usize> = (0..ports.len())
-        .filter(|&i| ports[i].access == Access::Item)
+    // The odometer's wheels in input order, the first turning fastest: item inputs step
+    // their item, stepping list inputs (cross reference) their branch.
+    let wheels: Vec<usize> = (0..ports.len())
+        .filter(|&i| ports[i].access == Access::Item || bi.steps.iter().any(|&(s, _)| s == i))
         .collect();
     let max_items = run.budget.max_items;
     let mut limit = None;
@@ -356,7 +363,16 @@ fn run_task(
         let mut empty_gap = false;
         // Cross reference: decompose k over the item inputs, the first varying fastest.
         let mut rest = k;
-        for &i in &item_inputs {
+        for &i in &wheels {
+            if let Some(&(_, branches)) = bi.steps.iter().find(|&&(s, _)| s == i) {
+                let b = &branches[rest % branches.len()].1;
+                rest /= branches.len();
+                cursors[i] = Cursor::List(Some(b));
+                if !ports[i].optional {
+                    skip |= b.is_empty();
+                }
+                continue;
+            }
             let len = bi.lengths[i];
             let index = if len == 0 {
                 None
@@ -384,7 +400,10 @@ fn run_task(
             }
         }
         for (i, port) in ports.iter().enumerate() {
-            if port.access == Access::List && !port.optional {
+            if port.access == Access::List
+                && !port.optional
+                && !bi.steps.iter().any(|&(s, _)| s == i)
+            {
                 skip |= bi.branches[i].is_none_or(Branch::is_empty);
             }
         }
