@@ -245,6 +245,8 @@ impl Mapper<'_> {
             Some(Special::PassThrough) => self.pass_through(o, r, &prefix),
             Some(
                 s @ (Special::Slider
+                | Special::Knob
+                | Special::MdSlider
                 | Special::Panel
                 | Special::Toggle
                 | Special::Button
@@ -696,6 +698,52 @@ impl Mapper<'_> {
                 );
                 ("params.number", vec![GhItem::Number(value)], note)
             }
+            Special::Knob => {
+                let d = c.chunk("DialData");
+                let get = |n: &str| d.and_then(|d| d.f64(n));
+                let note = format!(
+                    "Control Knob \"{}\": {} to {}, {} decimals",
+                    o.nickname,
+                    literal::number(get("Minimum").unwrap_or(0.0)),
+                    literal::number(get("Maximum").unwrap_or(1.0)),
+                    get("Decimals").unwrap_or(0.0)
+                );
+                let value = get("Value").unwrap_or(0.0);
+                ("params.number", vec![GhItem::Number(value)], note)
+            }
+            Special::MdSlider => {
+                // The slider keeps its position as fractions of its x, y and z domains; in
+                // its two-dimensional mode (SliderMode 0) the point lies in the XY plane.
+                let at = |fraction: Option<f64>, domain: &str| {
+                    let [a, b] = match c.item(domain).map(|i| &i.value) {
+                        Some(crate::archive::Value::Interval(d)) => *d,
+                        _ => [0.0, 1.0],
+                    };
+                    a + fraction.unwrap_or(0.0) * (b - a)
+                };
+                let fractions = match c.item("slider_value").map(|i| &i.value) {
+                    Some(crate::archive::Value::Point3(p)) => *p,
+                    _ => [0.0; 3],
+                };
+                let planar = c.i64("SliderMode").unwrap_or(0) == 0;
+                let point = [
+                    at(Some(fractions[0]), "x_domain"),
+                    at(Some(fractions[1]), "y_domain"),
+                    if planar {
+                        0.0
+                    } else {
+                        at(Some(fractions[2]), "z_domain")
+                    },
+                ];
+                let note = format!(
+                    "MD Slider \"{}\": ({}, {}, {})",
+                    o.nickname,
+                    literal::number(point[0]),
+                    literal::number(point[1]),
+                    literal::number(point[2])
+                );
+                ("params.point", vec![GhItem::Point(point)], note)
+            }
             Special::Panel => {
                 let text = c.str("UserText").unwrap_or_default();
                 let multiline = c
@@ -766,6 +814,20 @@ impl Mapper<'_> {
     }
 
     fn cluster(&mut self, o: &GhObject, r: ObjectRef, prefix: &str, depth: usize) {
+        if o.outputs.is_empty() {
+            // Nothing downstream can depend on a cluster without outputs (such clusters open
+            // a web page or draw in the canvas): whatever is inside, there is no data to run.
+            self.diag(
+                Level::Remark,
+                "dropped-cluster",
+                format!("{r} is a cluster without outputs, so no data depends on it: dropped"),
+                Some(r.clone()),
+                None,
+                None,
+            );
+            self.report.objects.push((r, Outcome::Dropped));
+            return;
+        }
         let Some(bytes) = o
             .container
             .item("ClusterDocument")

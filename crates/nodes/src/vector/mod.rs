@@ -16,6 +16,7 @@
 //! Grasshopper: Maths › Addition, Subtraction and Multiplication take vectors and points, and
 //! [Amplitude](vectors::amplitude) sets a vector's length.
 
+pub mod grid;
 pub mod plane;
 pub mod point;
 pub mod products;
@@ -32,6 +33,7 @@ pub fn register(registry: &mut NodeRegistry) {
     vectors::register(registry);
     products::register(registry);
     plane::register(registry);
+    grid::register(registry);
 }
 
 /// `x`, or an error saying that `what` is not a finite number.
