@@ -122,7 +122,13 @@ fn bench_divide(c: &mut Criterion) {
     });
     let length = curve.length() / n as f64 * (1.0 - 1e-9);
     group.bench_function(format!("cubic_{n}/by_length"), |b| {
-        b.iter(|| black_box(curve.divide_by_length(black_box(length)).expect("a division")));
+        b.iter(|| {
+            black_box(
+                curve
+                    .divide_by_length(black_box(length))
+                    .expect("a division"),
+            )
+        });
     });
     group.finish();
 }

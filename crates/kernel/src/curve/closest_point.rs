@@ -10,6 +10,14 @@
 //! is kept as a fallback candidate. The answer is the candidate with the smallest distance; on a
 //! tie the smallest parameter wins, so at the seam of a closed curve the domain's start is
 //! reported.
+//!
+//! Most spans cannot hold the answer, and are skipped without being sampled: by the convex hull
+//! property (weights are positive), every point of a span lies in the axis-aligned box of the
+//! span's `degree + 1` control points, so the distance to that box is a lower bound of the
+//! span's distances. Spans are searched nearest bound first, and a span whose bound exceeds the
+//! best distance found so far cannot improve on it (nor tie with it), so it is left out. The
+//! answer is the same as that of the search of every span,
+//! [`NurbsCurve::closest_point_exhaustive`], which the tests compare it with.
 
 use crate::{Error, NurbsCurve, Point3, Result, Vector3};
 
@@ -23,6 +31,12 @@ pub struct CurveClosestPoint {
     /// The distance from the test point to the closest point.
     pub distance: f64,
 }
+
+/// How far (relative, in squared distance) a span's bound must exceed the best squared
+/// distance for the span to be skipped: 1e-9, far above the rounding of both, so that a span
+/// holding a candidate as close as the best (up to rounding) is still searched and ties are
+/// broken as in the search of every span.
+const PRUNE_MARGIN: f64 = 1e-9;
 
 /// The number of samples per span of a non-rational curve of degree `p`.
 fn samples_per_span(degree: usize, rational: bool) -> usize {
@@ -45,50 +59,128 @@ impl NurbsCurve {
     }
 
     /// The closest point to `p` with the parameter restricted to `[lo, hi]` (`lo ≤ hi`, inside
-    /// the domain).
+    /// the domain), pruning the spans by the boxes of their control points.
     pub(crate) fn closest_point_between(&self, p: Point3, lo: f64, hi: f64) -> CurveClosestPoint {
-        let mut best = self.candidate(p, lo);
-        let end = self.candidate(p, hi);
-        if end.distance < best.distance {
-            best = end;
+        let mut best = self.ends(p, lo, hi);
+        let mut spans: Vec<(f64, usize)> = self
+            .span_indices()
+            .filter(|&span| self.knots()[span + 1] > lo && self.knots()[span] < hi)
+            .map(|span| (self.span_box_distance_squared(span, p), span))
+            .collect();
+        spans.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+        for (bound, span) in spans {
+            if bound > best.distance * best.distance * (1.0 + PRUNE_MARGIN) {
+                break;
+            }
+            self.search_span(span, p, lo, hi, &mut best);
         }
-        let samples = samples_per_span(self.degree(), self.is_rational());
+        self.finish(p, best)
+    }
+
+    /// The closest point to `p` over the whole domain by the search of every span, without the
+    /// pruning of [`NurbsCurve::closest_point`] (the reference it is tested and benchmarked
+    /// against; the answers are equal).
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] when `p` is not finite.
+    #[doc(hidden)]
+    pub fn closest_point_exhaustive(&self, p: Point3) -> Result<CurveClosestPoint> {
+        if !p.is_finite() {
+            return Err(Error::NotFinite { what: "point" });
+        }
+        let d = self.domain();
+        let mut best = self.ends(p, d.t0, d.t1);
         let spans: Vec<usize> = self.span_indices().collect();
         for span in spans {
-            let a = self.knots()[span].max(lo);
-            let b = self.knots()[span + 1].min(hi);
-            if b <= a {
-                continue;
-            }
-            let mut prev_t = a;
-            let mut prev_g = self.distance_gradient(span, p, a).0;
-            let mut best_sample = self.candidate(p, a);
-            for k in 1..=samples {
-                let t = if k == samples {
-                    b
-                } else {
-                    a + (b - a) * (k as f64 / samples as f64)
-                };
-                let (g, _) = self.distance_gradient(span, p, t);
-                let c = self.candidate(p, t);
-                if c.distance < best_sample.distance {
-                    best_sample = c;
-                }
-                if prev_g < 0.0 && g >= 0.0 {
-                    let root = self.polish(span, p, prev_t, t);
-                    let c = self.candidate(p, root);
-                    if c.distance < best.distance || (c.distance == best.distance && c.t < best.t) {
-                        best = c;
-                    }
-                }
-                prev_t = t;
-                prev_g = g;
-            }
-            if best_sample.distance < best.distance {
-                best = best_sample;
-            }
+            self.search_span(span, p, d.t0, d.t1, &mut best);
         }
-        best
+        Ok(self.finish(p, best))
+    }
+
+    /// The better of the two ends `lo` and `hi` (the start on a tie).
+    fn ends(&self, p: Point3, lo: f64, hi: f64) -> CurveClosestPoint {
+        let start = self.candidate(p, lo);
+        let end = self.candidate(p, hi);
+        if end.distance < start.distance {
+            end
+        } else {
+            start
+        }
+    }
+
+    /// The answer with its point evaluated by [`NurbsCurve::point_at`] (the search measures
+    /// distances with the points of the span derivatives, which may differ in the last bit).
+    fn finish(&self, p: Point3, best: CurveClosestPoint) -> CurveClosestPoint {
+        let point = self.point_at(best.t);
+        CurveClosestPoint {
+            t: best.t,
+            point,
+            distance: point.distance(p),
+        }
+    }
+
+    /// The squared distance from `p` to the axis-aligned box of the control points of `span`.
+    fn span_box_distance_squared(&self, span: usize, p: Point3) -> f64 {
+        let first = span + 1 - self.degree();
+        let cvs = &self.points()[first..=first + self.degree()];
+        let (mut lo, mut hi) = (cvs[0], cvs[0]);
+        for q in &cvs[1..] {
+            lo = Point3::new(lo.x.min(q.x), lo.y.min(q.y), lo.z.min(q.z));
+            hi = Point3::new(hi.x.max(q.x), hi.y.max(q.y), hi.z.max(q.z));
+        }
+        let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
+        let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+        let dz = (lo.z - p.z).max(p.z - hi.z).max(0.0);
+        dx * dx + dy * dy + dz * dz
+    }
+
+    /// Samples `span` (restricted to `[lo, hi]`), polishes every bracket of a minimum and offers
+    /// the roots and the best sample to `best` (smaller distance, or equal distance and smaller
+    /// parameter, wins).
+    fn search_span(&self, span: usize, p: Point3, lo: f64, hi: f64, best: &mut CurveClosestPoint) {
+        let a = self.knots()[span].max(lo);
+        let b = self.knots()[span + 1].min(hi);
+        if b <= a {
+            return;
+        }
+        let samples = samples_per_span(self.degree(), self.is_rational());
+        let (mut prev_g, start) = self.sample(span, p, a);
+        let mut prev_t = a;
+        let mut best_sample = start;
+        for k in 1..=samples {
+            let t = if k == samples {
+                b
+            } else {
+                a + (b - a) * (k as f64 / samples as f64)
+            };
+            let (g, c) = self.sample(span, p, t);
+            if c.distance < best_sample.distance {
+                best_sample = c;
+            }
+            if prev_g < 0.0 && g >= 0.0 {
+                let root = self.polish(span, p, prev_t, t);
+                offer(best, self.candidate(p, root));
+            }
+            prev_t = t;
+            prev_g = g;
+        }
+        offer(best, best_sample);
+    }
+
+    /// `g(t) = C′·(C − P)` on the piece of `span` and the candidate at `t`.
+    fn sample(&self, span: usize, p: Point3, t: f64) -> (f64, CurveClosestPoint) {
+        let mut d = [Vector3::ZERO; 2];
+        self.derivatives_in_span(span, t, &mut d);
+        let point = Point3::from_vector(d[0]);
+        let r = point - p;
+        (
+            d[1].dot(r),
+            CurveClosestPoint {
+                t,
+                point,
+                distance: r.length(),
+            },
+        )
     }
 
     fn candidate(&self, p: Point3, t: f64) -> CurveClosestPoint {
@@ -139,6 +231,13 @@ impl NurbsCurve {
             t = next;
         }
         t
+    }
+}
+
+/// Replaces `best` by `c` if `c` is closer, or as close with a smaller parameter.
+fn offer(best: &mut CurveClosestPoint, c: CurveClosestPoint) {
+    if c.distance < best.distance || (c.distance == best.distance && c.t < best.t) {
+        *best = c;
     }
 }
 

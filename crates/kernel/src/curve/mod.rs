@@ -17,6 +17,7 @@ pub(crate) mod closest_point;
 pub(crate) mod continuity;
 pub(crate) mod hermite;
 pub(crate) mod kinks;
+pub(crate) mod length_table;
 pub(crate) mod line;
 pub(crate) mod measure;
 pub(crate) mod nurbs;
