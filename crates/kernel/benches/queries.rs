@@ -5,11 +5,16 @@
 //!   `curve_eval`) divided into `DIVISIONS` pieces by count and by length, against the batch
 //!   evaluation of as many points of the same curve (`points_at`, the baseline).
 //! - `curve_closest_point`: 1,000 random queries around the same curve (plain and rational),
-//!   against one `point_at` per query (the baseline: the cost of one evaluation).
+//!   against one `point_at` per query (the baseline: the cost of one evaluation), and the
+//!   search of every span without pruning (`closest_point_exhaustive`) for reference.
 //! - `surface_closest_point`: 100 queries on a rational bicubic 8 × 8 surface and on a sphere,
 //!   against one `point_at` per query.
 //! - `sphere`: building 10,000 spheres' NURBS surfaces (what the Sphere node outputs per item),
 //!   against copying a 45-point control grid per item.
+//!
+//! Every time is the CPU time of the benchmarking thread (see `support/cpu_time.rs`): the
+//! machine these figures come from is shared, and wall-clock times there count the time other
+//! processes hold the core.
 //!
 //! Run with `cargo bench -p locus-kernel --bench queries`; set `LOCUS_BENCH_DIVISIONS` to
 //! divide into fewer pieces (the default is 1,000,000). The figures are recorded in
@@ -18,6 +23,10 @@
 use std::hint::black_box;
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
+
+#[path = "support/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::ThreadCpuTime;
 use locus_kernel::{NurbsCurve, NurbsSurface, Point3, Sphere};
 
 /// The default number of divisions.
@@ -98,7 +107,7 @@ fn queries(count: usize, lo: Point3, hi: Point3, seed: u64) -> Vec<Point3> {
         .collect()
 }
 
-fn bench_divide(c: &mut Criterion) {
+fn bench_divide(c: &mut Criterion<ThreadCpuTime>) {
     let n = divisions();
     let mut group = c.benchmark_group("divide");
     group.sample_size(10);
@@ -133,7 +142,7 @@ fn bench_divide(c: &mut Criterion) {
     group.finish();
 }
 
-fn bench_curve_closest(c: &mut Criterion) {
+fn bench_curve_closest(c: &mut Criterion<ThreadCpuTime>) {
     let mut group = c.benchmark_group("curve_closest_point");
     group.sample_size(10);
     let tests = queries(
@@ -162,11 +171,22 @@ fn bench_curve_closest(c: &mut Criterion) {
                 }
             });
         });
+        group.bench_function(format!("{kind}/every_span_reference"), |b| {
+            b.iter(|| {
+                for &p in &tests {
+                    black_box(
+                        curve
+                            .closest_point_exhaustive(black_box(p))
+                            .expect("closest point"),
+                    );
+                }
+            });
+        });
     }
     group.finish();
 }
 
-fn bench_surface_closest(c: &mut Criterion) {
+fn bench_surface_closest(c: &mut Criterion<ThreadCpuTime>) {
     let mut group = c.benchmark_group("surface_closest_point");
     group.sample_size(10);
     let sphere = Sphere::new(Point3::ORIGIN, 2.0)
@@ -210,7 +230,7 @@ fn bench_surface_closest(c: &mut Criterion) {
     group.finish();
 }
 
-fn bench_sphere(c: &mut Criterion) {
+fn bench_sphere(c: &mut Criterion<ThreadCpuTime>) {
     const COUNT: usize = 10_000;
     let mut group = c.benchmark_group("sphere");
     group.sample_size(10);
@@ -256,11 +276,9 @@ fn bench_sphere(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(
-    benches,
-    bench_divide,
-    bench_curve_closest,
-    bench_surface_closest,
-    bench_sphere
-);
+criterion_group! {
+    name = benches;
+    config = Criterion::default().with_measurement(ThreadCpuTime);
+    targets = bench_divide, bench_curve_closest, bench_surface_closest, bench_sphere
+}
 criterion_main!(benches);

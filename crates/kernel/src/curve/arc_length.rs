@@ -12,7 +12,7 @@
 
 use std::sync::OnceLock;
 
-use crate::curve::length_table::LengthTable;
+use crate::curve::length_table::{Cursor, LengthTable};
 use crate::geometry::tolerance::LENGTH_TOLERANCE;
 use crate::{Error, NurbsCurve, Result, Vector3};
 
@@ -234,7 +234,7 @@ impl NurbsCurve {
         let d = self.domain();
         let last = if self.is_closed() { count - 1 } else { count };
         let mut out = Vec::with_capacity(last + 1);
-        let mut hint = 0;
+        let mut cursor = Cursor::default();
         for k in 0..=last {
             let t = if k == 0 {
                 d.t0
@@ -242,7 +242,7 @@ impl NurbsCurve {
                 d.t1
             } else {
                 let s = total * k as f64 / count as f64;
-                table.parameter_from(self, s, &mut hint, true)?
+                table.parameter_from(self, s, &mut cursor, true)?
             };
             out.push(t);
         }
@@ -268,7 +268,7 @@ impl NurbsCurve {
         let count = division_count(total + slack, length)?;
         let closed = self.is_closed();
         let mut out = Vec::with_capacity(count + 1);
-        let mut hint = 0;
+        let mut cursor = Cursor::default();
         for k in 0..=count {
             let s = k as f64 * length;
             if k > 0 && (s - total).abs() <= slack {
@@ -277,7 +277,7 @@ impl NurbsCurve {
                 }
                 break;
             }
-            out.push(table.parameter_from(self, s.min(total), &mut hint, true)?);
+            out.push(table.parameter_from(self, s.min(total), &mut cursor, true)?);
         }
         Ok(out)
     }

@@ -14,11 +14,14 @@
 //! Most spans cannot hold the answer, and are skipped without being sampled: by the convex hull
 //! property (weights are positive), every point of a span lies in the axis-aligned box of the
 //! span's `degree + 1` control points, so the distance to that box is a lower bound of the
-//! span's distances. Spans are searched nearest bound first, and a span whose bound exceeds the
-//! best distance found so far cannot improve on it (nor tie with it), so it is left out. The
+//! span's distances. The span with the nearest box is searched first, and a span whose bound
+//! exceeds the best distance found so far cannot improve on it (nor tie with it), so it is left
+//! out; spans that pass are checked again against the box of their Bézier control points,
+//! which is much tighter. The
 //! answer is the same as that of the search of every span,
 //! [`NurbsCurve::closest_point_exhaustive`], which the tests compare it with.
 
+use crate::curve::nurbs::basis::MAX_ORDER;
 use crate::{Error, NurbsCurve, Point3, Result, Vector3};
 
 /// The closest point of a curve to a test point.
@@ -62,15 +65,31 @@ impl NurbsCurve {
     /// the domain), pruning the spans by the boxes of their control points.
     pub(crate) fn closest_point_between(&self, p: Point3, lo: f64, hi: f64) -> CurveClosestPoint {
         let mut best = self.ends(p, lo, hi);
-        let mut spans: Vec<(f64, usize)> = self
+        let spans: Vec<(f64, usize)> = self
             .span_indices()
             .filter(|&span| self.knots()[span + 1] > lo && self.knots()[span] < hi)
             .map(|span| (self.span_box_distance_squared(span, p), span))
             .collect();
-        spans.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-        for (bound, span) in spans {
-            if bound > best.distance * best.distance * (1.0 + PRUNE_MARGIN) {
-                break;
+        let beyond = |bound: f64, best: &CurveClosestPoint| {
+            bound > best.distance * best.distance * (1.0 + PRUNE_MARGIN)
+        };
+        // The span of the nearest box first, which usually holds the answer, then the others
+        // in order, each unless its box (of the B-spline control points, then of the tighter
+        // Bézier control points) is beyond the best distance so far.
+        let nearest = spans
+            .iter()
+            .enumerate()
+            .min_by(|x, y| x.1.0.total_cmp(&y.1.0))
+            .map(|(k, _)| k);
+        if let Some(k) = nearest {
+            self.search_span(spans[k].1, p, lo, hi, &mut best);
+        }
+        for (k, &(bound, span)) in spans.iter().enumerate() {
+            if Some(k) == nearest
+                || beyond(bound, &best)
+                || beyond(self.bezier_box_distance_squared(span, p), &best)
+            {
+                continue;
             }
             self.search_span(span, p, lo, hi, &mut best);
         }
@@ -132,6 +151,49 @@ impl NurbsCurve {
         let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
         let dz = (lo.z - p.z).max(p.z - hi.z).max(0.0);
         dx * dx + dy * dy + dz * dz
+    }
+
+    /// The squared distance from `p` to the axis-aligned box of the Bézier control points of
+    /// the polynomial piece of `span` (the blossoms `B(a, …, a, b, …, b)` of the span `[a, b]`,
+    /// computed homogeneously by de Boor's triangle and projected; for positive weights the
+    /// piece lies in their convex hull, which is much tighter than that of the B-spline
+    /// control points).
+    fn bezier_box_distance_squared(&self, span: usize, p: Point3) -> f64 {
+        let degree = self.degree();
+        let first = span + 1 - degree;
+        let knots = &self.knots()[first..first + 2 * degree];
+        let (a, b) = (self.knots()[span], self.knots()[span + 1]);
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for j in 0..=degree {
+            let mut d = [[0.0; 4]; MAX_ORDER];
+            for (i, di) in d[..=degree].iter_mut().enumerate() {
+                let (q, w) = (self.points()[first + i], self.weights()[first + i]);
+                *di = [q.x * w, q.y * w, q.z * w, w];
+            }
+            for r in 1..=degree {
+                let x = if r <= degree - j { a } else { b };
+                for i in (r..=degree).rev() {
+                    let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
+                    let alpha = (x - k0) / (k1 - k0);
+                    for c in 0..4 {
+                        d[i][c] = (1.0 - alpha) * d[i - 1][c] + alpha * d[i][c];
+                    }
+                }
+            }
+            let h = d[degree];
+            for c in 0..3 {
+                let v = h[c] / h[3];
+                lo[c] = lo[c].min(v);
+                hi[c] = hi[c].max(v);
+            }
+        }
+        let mut sum = 0.0;
+        for (c, x) in p.to_array().into_iter().enumerate() {
+            let d = (lo[c] - x).max(x - hi[c]).max(0.0);
+            sum += d * d;
+        }
+        sum
     }
 
     /// Samples `span` (restricted to `[lo, hi]`), polishes every bracket of a minimum and offers
@@ -254,6 +316,35 @@ mod tests {
         let r = n.closest_point(q).unwrap();
         assert!((r.distance - ((5.0f64 - 2.0).powi(2) + 1.0).sqrt()).abs() < 1e-12);
         assert!(r.point.distance(Point3::new(1.2, 1.6, 0.0)) < 1e-10);
+    }
+
+    #[test]
+    fn bezier_points_bound_the_span() {
+        // The box of a span's Bézier points holds the span's points, and its ends are the
+        // span's end points (distance 0 from them).
+        let c = NurbsCurve::new(
+            3,
+            (0..7)
+                .map(|i| Point3::new(i as f64, (i * i % 5) as f64, (i % 2) as f64))
+                .collect(),
+            vec![1.0, 2.0, 0.5, 1.0, 1.5, 0.7, 1.0],
+            vec![0.0, 0.0, 0.0, 0.4, 1.5, 2.0, 3.0, 3.0, 3.0],
+        )
+        .unwrap();
+        for span in c.span_indices() {
+            let (a, b) = (c.knots()[span], c.knots()[span + 1]);
+            for k in 0..=20 {
+                let t = a + (b - a) * k as f64 / 20.0;
+                let q = c.point_at(t);
+                assert!(
+                    c.bezier_box_distance_squared(span, q) < 1e-24,
+                    "span {span} t {t}"
+                );
+            }
+            // A point beside the span's box is farther than 0.
+            let q = c.point_at(a) + Vector3::new(0.0, 0.0, 50.0);
+            assert!(c.bezier_box_distance_squared(span, q) > 1.0);
+        }
     }
 
     #[test]

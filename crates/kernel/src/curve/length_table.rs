@@ -24,6 +24,16 @@ use crate::{Error, NurbsCurve, Result, Vector3};
 /// 1e-2, so that the parameter's length error stays a hundredth of the quadrature's.
 const INVERSION_SHARE: f64 = 1e-2;
 
+/// A Newton step `δ` from a parameter whose length is known is taken without measuring the
+/// length again when its Taylor remainder `½·|v′|·δ²` (with `v′` the derivative of the speed)
+/// is at most this share of the inversion tolerance: 0.1, leaving a margin of 10 for the change
+/// of `v′` over the step.
+const UNCHECKED_STEP_SHARE: f64 = 0.1;
+
+/// A step is taken unchecked (see [`UNCHECKED_STEP_SHARE`]) only when it is at most this share
+/// of its panel, so that the local Taylor estimate holds: 1e-3.
+const UNCHECKED_STEP_SPAN: f64 = 1e-3;
+
 /// At most this many Newton (or bisection) steps per inverted length; bisection alone halves the
 /// bracket 60 times, below the rounding of any `f64` parameter.
 const MAX_INVERSION_STEPS: usize = 100;
@@ -43,6 +53,15 @@ struct Panel {
     /// The speeds `|C′|` at `a` and at `b`, for the start guess.
     speed_a: f64,
     speed_b: f64,
+}
+
+/// Where the previous inversion of a walk ended: its panel and, once a length was inverted in
+/// it, the parameter, its length from the panel's start and the speed there (the start guess
+/// for the next length in the same panel).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Cursor {
+    panel: usize,
+    last: Option<(f64, f64, f64)>,
 }
 
 /// The lengths of the panels of a curve and their running sums.
@@ -103,6 +122,7 @@ impl LengthTable {
 
     /// The length from the start to `t` (in the domain): the table up to `t`'s panel and the
     /// 10-node rule inside it.
+    #[cfg(test)]
     pub(crate) fn length_to(&self, curve: &NurbsCurve, t: f64) -> f64 {
         if t <= self.t0 || self.panels.is_empty() {
             return 0.0;
@@ -120,18 +140,18 @@ impl LengthTable {
     /// # Errors
     /// [`Error::NotFinite`] for NaN, [`Error::InvalidInput`] for a length outside the curve's.
     pub(crate) fn parameter_at(&self, curve: &NurbsCurve, s: f64) -> Result<f64> {
-        let mut hint = 0;
-        self.parameter_from(curve, s, &mut hint, false)
+        self.parameter_from(curve, s, &mut Cursor::default(), false)
     }
 
-    /// As [`LengthTable::parameter_at`], with the panel search starting at `*hint` and walking
-    /// forward when `walk` is set (lengths given in increasing order: linear time in all); the
-    /// panel of `s` is left in `*hint`.
+    /// As [`LengthTable::parameter_at`], with the panel search starting at the cursor's panel
+    /// and walking forward when `walk` is set (lengths given in increasing order: linear time in
+    /// all, and each length starts from the previous one's parameter when both are in the same
+    /// panel); the cursor is left at `s`.
     pub(crate) fn parameter_from(
         &self,
         curve: &NurbsCurve,
         s: f64,
-        hint: &mut usize,
+        cursor: &mut Cursor,
         walk: bool,
     ) -> Result<f64> {
         if !s.is_finite() {
@@ -153,7 +173,7 @@ impl LengthTable {
         }
         let last = self.panels.len() - 1;
         let i = if walk {
-            let mut i = (*hint).min(last);
+            let mut i = cursor.panel.min(last);
             while i < last && self.panels[i + 1].start <= s {
                 i += 1;
             }
@@ -164,43 +184,75 @@ impl LengthTable {
                 .saturating_sub(1)
                 .min(last)
         };
-        *hint = i;
-        Ok(self.invert(curve, &self.panels[i], s - self.panels[i].start))
+        if i != cursor.panel || !walk {
+            cursor.last = None;
+        }
+        cursor.panel = i;
+        let (t, target, speed) = self.invert(
+            curve,
+            &self.panels[i],
+            s - self.panels[i].start,
+            cursor.last,
+        );
+        cursor.last = Some((t, target, speed));
+        Ok(t)
     }
 
-    /// The parameter `t` in `panel` whose length from the panel's start is `target`.
-    fn invert(&self, curve: &NurbsCurve, panel: &Panel, target: f64) -> f64 {
+    /// The parameter `t` in `panel` whose length from the panel's start is `target`, with that
+    /// length and the speed at `t` (NaN where not measured); `last` is an earlier answer in the
+    /// same panel to start from.
+    fn invert(
+        &self,
+        curve: &NurbsCurve,
+        panel: &Panel,
+        target: f64,
+        last: Option<(f64, f64, f64)>,
+    ) -> (f64, f64, f64) {
         let (a, b, len) = (panel.a, panel.b, panel.length);
         if len <= 0.0 {
-            return a;
+            return (a, target, f64::NAN);
         }
         let target = target.min(len);
         let local_tol = self.tolerance * INVERSION_SHARE;
-        let mut t = hermite_guess(panel, target).clamp(a, b);
+        let guess = match last {
+            Some((t, r, speed)) if speed > 0.0 && r <= target => t + (target - r) / speed,
+            _ => hermite_guess(panel, target),
+        };
+        let mut t = guess.clamp(a, b);
         let (mut lo, mut hi) = (a, b);
         let scale = a.abs().max(b.abs()).max(1.0);
         for _ in 0..MAX_INVERSION_STEPS {
             let f = curve.panel_in_span(panel.span, a, t) - target;
+            let mut d = [Vector3::ZERO; 3];
+            curve.derivatives_in_span(panel.span, t, &mut d);
+            let speed = d[1].length();
             if f.abs() <= local_tol {
-                return t;
+                return (t, f + target, speed);
             }
             if f > 0.0 {
                 hi = t;
             } else {
                 lo = t;
             }
-            let speed = curve.speed_in_span(panel.span, t);
-            let newton = t - f / speed;
-            t = if speed > 0.0 && newton > lo && newton < hi {
-                newton
+            let step = -f / speed;
+            let newton = t + step;
+            if speed > 0.0 && newton > lo && newton < hi {
+                // The speed's derivative, v′ = C′·C″ / |C′|, bounds the step's remainder.
+                let remainder = 0.5 * (d[1].dot(d[2]) / speed).abs() * step * step;
+                if remainder <= UNCHECKED_STEP_SHARE * local_tol
+                    && step.abs() <= UNCHECKED_STEP_SPAN * (b - a)
+                {
+                    return (newton, target, speed);
+                }
+                t = newton;
             } else {
-                0.5 * (lo + hi)
-            };
+                t = 0.5 * (lo + hi);
+            }
             if hi - lo <= 4.0 * f64::EPSILON * scale {
-                return t;
+                return (t, target, f64::NAN);
             }
         }
-        t
+        (t, target, f64::NAN)
     }
 }
 

@@ -41,6 +41,13 @@ pub struct SurfaceClosestPoint {
 const MAX_ITERATIONS: usize = 64;
 /// At most this many halvings of a step in the line search.
 const MAX_HALVINGS: usize = 40;
+/// How many ulps of the largest coordinate (of the surface point and the test point) the
+/// evaluation of a point may be off by: 16. A squared distance that rises by no more than the
+/// rounding this causes is not a rise, so the line search accepts a step that changes `f` only
+/// at rounding level and Newton's method goes on to the root of the gradient, to rounding level
+/// in the parameters, instead of stopping where `f` no longer decreases measurably (about 1e-8
+/// of the patch short of it, since `f` is flat to second order there).
+const NOISE_ULPS: f64 = 16.0;
 /// At most this many discrete local minima of a patch's sample grid are polished.
 const STARTS_PER_PATCH: usize = 3;
 
@@ -360,7 +367,7 @@ impl NurbsSurface {
                 let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
                 let p = self.point_at(nu, nv);
                 let nf = p.distance_squared(test);
-                if nf <= f {
+                if nf <= f + rounding_noise(p, test, f) {
                     accepted = Some((nu, nv, nf));
                     break;
                 }
@@ -457,7 +464,8 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nt = (t + alpha * s).clamp(range[0], range[1]);
                 let (u, v) = uv(nt);
-                if self.point_at(u, v).distance_squared(test) <= f {
+                let p = self.point_at(u, v);
+                if p.distance_squared(test) <= f + rounding_noise(p, test, f) {
                     accepted = Some(nt);
                     break;
                 }
@@ -477,6 +485,18 @@ impl NurbsSurface {
         let (u, v) = uv(t);
         best.offer(u, v, d.point, d.point.distance_squared(test));
     }
+}
+
+/// The rounding level of the squared distance `f` between `point` (an evaluated surface
+/// point) and `test`: `2·√f·e + e²` with `e` [`NOISE_ULPS`] ulps of the largest coordinate.
+fn rounding_noise(point: Point3, test: Point3, f: f64) -> f64 {
+    let magnitude = point
+        .to_array()
+        .into_iter()
+        .chain(test.to_array())
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    let e = NOISE_ULPS * f64::EPSILON * magnitude;
+    2.0 * f.sqrt() * e + e * e
 }
 
 /// The most samples per span and direction.
@@ -588,6 +608,26 @@ mod tests {
                     cp.distance <= sampled + 1e-12,
                     "{p:?}: {} vs {sampled}",
                     cp.distance
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_polish_ends_at_rounding_level() {
+        // Test points on the normals of interior points: the foot is the closest point, and
+        // the answer must be it to rounding level in the parameters.
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for (u, v, h) in [(0.3, -0.2, 0.4), (1.1, 1.7, -0.3), (1.7, 2.5, 0.05)] {
+                let foot = s.point_at(u, v);
+                let normal = s.normal_at(u, v).unwrap();
+                let cp = s.closest_point(foot + normal * h).unwrap();
+                assert!(
+                    (cp.u - u).abs() <= 1e-13 && (cp.v - v).abs() <= 1e-13,
+                    "({u}, {v}) found as ({}, {})",
+                    cp.u,
+                    cp.v
                 );
             }
         }
