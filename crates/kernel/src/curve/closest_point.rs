@@ -21,8 +21,8 @@
 //! answer is the same as that of the search of every span,
 //! [`NurbsCurve::closest_point_exhaustive`], which the tests compare it with.
 
-use crate::curve::nurbs::basis::MAX_ORDER;
-use crate::{Error, NurbsCurve, Point3, Result, Vector3};
+use crate::curve::bezier_piece::BezierPiece;
+use crate::{Error, NurbsCurve, Point3, Result};
 
 /// The closest point of a curve to a test point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,16 +82,16 @@ impl NurbsCurve {
             .min_by(|x, y| x.1.0.total_cmp(&y.1.0))
             .map(|(k, _)| k);
         if let Some(k) = nearest {
-            self.search_span(spans[k].1, p, lo, hi, &mut best);
+            self.search_piece(&self.bezier_piece(spans[k].1), p, lo, hi, &mut best);
         }
         for (k, &(bound, span)) in spans.iter().enumerate() {
-            if Some(k) == nearest
-                || beyond(bound, &best)
-                || beyond(self.bezier_box_distance_squared(span, p), &best)
-            {
+            if Some(k) == nearest || beyond(bound, &best) {
                 continue;
             }
-            self.search_span(span, p, lo, hi, &mut best);
+            let piece = self.bezier_piece(span);
+            if !beyond(piece.box_distance_squared(p), &best) {
+                self.search_piece(&piece, p, lo, hi, &mut best);
+            }
         }
         self.finish(p, best)
     }
@@ -111,7 +111,7 @@ impl NurbsCurve {
         let mut best = self.ends(p, d.t0, d.t1);
         let spans: Vec<usize> = self.span_indices().collect();
         for span in spans {
-            self.search_span(span, p, d.t0, d.t1, &mut best);
+            self.search_piece(&self.bezier_piece(span), p, d.t0, d.t1, &mut best);
         }
         Ok(self.finish(p, best))
     }
@@ -153,60 +153,25 @@ impl NurbsCurve {
         dx * dx + dy * dy + dz * dz
     }
 
-    /// The squared distance from `p` to the axis-aligned box of the Bézier control points of
-    /// the polynomial piece of `span` (the blossoms `B(a, …, a, b, …, b)` of the span `[a, b]`,
-    /// computed homogeneously by de Boor's triangle and projected; for positive weights the
-    /// piece lies in their convex hull, which is much tighter than that of the B-spline
-    /// control points).
-    fn bezier_box_distance_squared(&self, span: usize, p: Point3) -> f64 {
-        let degree = self.degree();
-        let first = span + 1 - degree;
-        let knots = &self.knots()[first..first + 2 * degree];
-        let (a, b) = (self.knots()[span], self.knots()[span + 1]);
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for j in 0..=degree {
-            let mut d = [[0.0; 4]; MAX_ORDER];
-            for (i, di) in d[..=degree].iter_mut().enumerate() {
-                let (q, w) = (self.points()[first + i], self.weights()[first + i]);
-                *di = [q.x * w, q.y * w, q.z * w, w];
-            }
-            for r in 1..=degree {
-                let x = if r <= degree - j { a } else { b };
-                for i in (r..=degree).rev() {
-                    let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
-                    let alpha = (x - k0) / (k1 - k0);
-                    for c in 0..4 {
-                        d[i][c] = (1.0 - alpha) * d[i - 1][c] + alpha * d[i][c];
-                    }
-                }
-            }
-            let h = d[degree];
-            for c in 0..3 {
-                let v = h[c] / h[3];
-                lo[c] = lo[c].min(v);
-                hi[c] = hi[c].max(v);
-            }
-        }
-        let mut sum = 0.0;
-        for (c, x) in p.to_array().into_iter().enumerate() {
-            let d = (lo[c] - x).max(x - hi[c]).max(0.0);
-            sum += d * d;
-        }
-        sum
-    }
-
-    /// Samples `span` (restricted to `[lo, hi]`), polishes every bracket of a minimum and offers
-    /// the roots and the best sample to `best` (smaller distance, or equal distance and smaller
-    /// parameter, wins).
-    fn search_span(&self, span: usize, p: Point3, lo: f64, hi: f64, best: &mut CurveClosestPoint) {
-        let a = self.knots()[span].max(lo);
-        let b = self.knots()[span + 1].min(hi);
+    /// Samples `piece` (restricted to `[lo, hi]`), polishes every bracket of a minimum and
+    /// offers the roots and the best sample to `best` (smaller distance, or equal distance and
+    /// smaller parameter, wins). The piece is evaluated in its Bézier form, so that at the
+    /// span's end the derivatives are those from the left.
+    fn search_piece(
+        &self,
+        piece: &BezierPiece,
+        p: Point3,
+        lo: f64,
+        hi: f64,
+        best: &mut CurveClosestPoint,
+    ) {
+        let a = piece.a.max(lo);
+        let b = piece.b.min(hi);
         if b <= a {
             return;
         }
         let samples = samples_per_span(self.degree(), self.is_rational());
-        let (mut prev_g, start) = self.sample(span, p, a);
+        let (mut prev_g, start) = sample(piece, p, a);
         let mut prev_t = a;
         let mut best_sample = start;
         for k in 1..=samples {
@@ -215,34 +180,18 @@ impl NurbsCurve {
             } else {
                 a + (b - a) * (k as f64 / samples as f64)
             };
-            let (g, c) = self.sample(span, p, t);
+            let (g, c) = sample(piece, p, t);
             if c.distance < best_sample.distance {
                 best_sample = c;
             }
             if prev_g < 0.0 && g >= 0.0 {
-                let root = self.polish(span, p, prev_t, t);
+                let root = polish(piece, p, prev_t, t);
                 offer(best, self.candidate(p, root));
             }
             prev_t = t;
             prev_g = g;
         }
         offer(best, best_sample);
-    }
-
-    /// `g(t) = C′·(C − P)` on the piece of `span` and the candidate at `t`.
-    fn sample(&self, span: usize, p: Point3, t: f64) -> (f64, CurveClosestPoint) {
-        let mut d = [Vector3::ZERO; 2];
-        self.derivatives_in_span(span, t, &mut d);
-        let point = Point3::from_vector(d[0]);
-        let r = point - p;
-        (
-            d[1].dot(r),
-            CurveClosestPoint {
-                t,
-                point,
-                distance: r.length(),
-            },
-        )
     }
 
     fn candidate(&self, p: Point3, t: f64) -> CurveClosestPoint {
@@ -253,47 +202,58 @@ impl NurbsCurve {
             distance: point.distance(p),
         }
     }
+}
 
-    /// `g(t) = C'·(C − P)` and its derivative `C''·(C − P) + |C'|²`, on the polynomial piece of
-    /// span `span` (so that at the span's end the derivatives are those from the left).
-    fn distance_gradient(&self, span: usize, p: Point3, t: f64) -> (f64, f64) {
-        let mut d = [Vector3::ZERO; 3];
-        self.derivatives_in_span(span, t, &mut d);
-        let r = Point3::from_vector(d[0]) - p;
-        (d[1].dot(r), d[2].dot(r) + d[1].length_squared())
-    }
+/// `g(t) = C′·(C − P)` on `piece` and the candidate at `t`.
+fn sample(piece: &BezierPiece, p: Point3, t: f64) -> (f64, CurveClosestPoint) {
+    let [d0, d1, _] = piece.derivatives(t);
+    let point = Point3::from_vector(d0);
+    let r = point - p;
+    (
+        d1.dot(r),
+        CurveClosestPoint {
+            t,
+            point,
+            distance: r.length(),
+        },
+    )
+}
 
-    /// A root of `g` in `[a, b]` with `g(a) < 0 ≤ g(b)`: Newton's method, falling back to
-    /// bisection whenever a step would leave the bracket.
-    fn polish(&self, span: usize, p: Point3, a: f64, b: f64) -> f64 {
-        let (mut lo, mut hi) = (a, b);
-        let mut t = 0.5 * (a + b);
-        let scale = a.abs().max(b.abs()).max(1.0);
-        for _ in 0..100 {
-            let (g, dg) = self.distance_gradient(span, p, t);
-            if g == 0.0 {
-                return t;
-            }
-            if g < 0.0 {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let newton = t - g / dg;
-            let next = if dg > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            if (next - t).abs() <= 2.0 * f64::EPSILON * scale
-                || hi - lo <= 2.0 * f64::EPSILON * scale
-            {
-                return next;
-            }
-            t = next;
+/// `g(t) = C′·(C − P)` and its derivative `C″·(C − P) + |C′|²` on `piece`.
+fn distance_gradient(piece: &BezierPiece, p: Point3, t: f64) -> (f64, f64) {
+    let [d0, d1, d2] = piece.derivatives(t);
+    let r = Point3::from_vector(d0) - p;
+    (d1.dot(r), d2.dot(r) + d1.length_squared())
+}
+
+/// A root of `g` in `[a, b]` with `g(a) < 0 ≤ g(b)`: Newton's method, falling back to
+/// bisection whenever a step would leave the bracket.
+fn polish(piece: &BezierPiece, p: Point3, a: f64, b: f64) -> f64 {
+    let (mut lo, mut hi) = (a, b);
+    let mut t = 0.5 * (a + b);
+    let scale = a.abs().max(b.abs()).max(1.0);
+    for _ in 0..100 {
+        let (g, dg) = distance_gradient(piece, p, t);
+        if g == 0.0 {
+            return t;
         }
-        t
+        if g < 0.0 {
+            lo = t;
+        } else {
+            hi = t;
+        }
+        let newton = t - g / dg;
+        let next = if dg > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - t).abs() <= 2.0 * f64::EPSILON * scale || hi - lo <= 2.0 * f64::EPSILON * scale {
+            return next;
+        }
+        t = next;
     }
+    t
 }
 
 /// Replaces `best` by `c` if `c` is closer, or as close with a smaller parameter.
@@ -316,35 +276,6 @@ mod tests {
         let r = n.closest_point(q).unwrap();
         assert!((r.distance - ((5.0f64 - 2.0).powi(2) + 1.0).sqrt()).abs() < 1e-12);
         assert!(r.point.distance(Point3::new(1.2, 1.6, 0.0)) < 1e-10);
-    }
-
-    #[test]
-    fn bezier_points_bound_the_span() {
-        // The box of a span's Bézier points holds the span's points, and its ends are the
-        // span's end points (distance 0 from them).
-        let c = NurbsCurve::new(
-            3,
-            (0..7)
-                .map(|i| Point3::new(i as f64, (i * i % 5) as f64, (i % 2) as f64))
-                .collect(),
-            vec![1.0, 2.0, 0.5, 1.0, 1.5, 0.7, 1.0],
-            vec![0.0, 0.0, 0.0, 0.4, 1.5, 2.0, 3.0, 3.0, 3.0],
-        )
-        .unwrap();
-        for span in c.span_indices() {
-            let (a, b) = (c.knots()[span], c.knots()[span + 1]);
-            for k in 0..=20 {
-                let t = a + (b - a) * k as f64 / 20.0;
-                let q = c.point_at(t);
-                assert!(
-                    c.bezier_box_distance_squared(span, q) < 1e-24,
-                    "span {span} t {t}"
-                );
-            }
-            // A point beside the span's box is farther than 0.
-            let q = c.point_at(a) + Vector3::new(0.0, 0.0, 50.0);
-            assert!(c.bezier_box_distance_squared(span, q) > 1.0);
-        }
     }
 
     #[test]

@@ -12,6 +12,7 @@
 pub(crate) mod arc;
 pub(crate) mod arc_length;
 pub(crate) mod bezier;
+pub(crate) mod bezier_piece;
 pub(crate) mod circle;
 pub(crate) mod closest_point;
 pub(crate) mod continuity;
