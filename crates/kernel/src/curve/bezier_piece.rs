@@ -56,21 +56,20 @@ fn blossoms<const N: usize>(
 ) {
     let mut start = [[0.0; 4]; N];
     start[..=degree].copy_from_slice(&homogeneous[..=degree]);
-    {
-        for (j, out) in points[..=degree].iter_mut().enumerate() {
-            let mut d = start;
-            for r in 1..=degree {
-                let x = if r <= degree - j { a } else { b };
-                for i in (r..=degree).rev() {
-                    let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
-                    let alpha = (x - k0) / (k1 - k0);
-                    for c in 0..4 {
-                        d[i][c] = (1.0 - alpha) * d[i - 1][c] + alpha * d[i][c];
-                    }
+    for (j, out) in points[..=degree].iter_mut().enumerate() {
+        let mut d = start;
+        for r in 1..=degree {
+            let x = if r <= degree - j { a } else { b };
+            for i in (r..=degree).rev() {
+                let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
+                let alpha = (x - k0) / (k1 - k0);
+                let prev = d[i - 1];
+                for (c, &q) in d[i].iter_mut().zip(&prev) {
+                    *c = (1.0 - alpha) * q + alpha * *c;
                 }
             }
-            *out = d[degree];
         }
+        *out = d[degree];
     }
 }
 
