@@ -32,9 +32,9 @@ impl NurbsCurve {
         }
         let mut points = [[0.0; 4]; MAX_ORDER];
         if degree < 4 {
-            blossoms::<4>(degree, knots, [a, b], &homogeneous, &mut points);
+            blossoms::<4>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
         } else {
-            blossoms::<MAX_ORDER>(degree, knots, [a, b], &homogeneous, &mut points);
+            blossoms::<MAX_ORDER>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
         }
         BezierPiece {
             a,
@@ -45,14 +45,16 @@ impl NurbsCurve {
     }
 }
 
-/// The Bézier points of one span (see [`NurbsCurve::bezier_piece`]) with `N > degree`-sized
-/// working arrays, so that low degrees copy little.
-fn blossoms<const N: usize>(
+/// The Bézier points of one span (see [`NurbsCurve::bezier_piece`]) from its `degree + 1`
+/// homogeneous B-spline control points and its `2·degree` local knots (Rhino form, from the
+/// span's first control point), into `points[..=degree]`, with `N > degree`-sized working
+/// arrays, so that low degrees copy little.
+pub(crate) fn blossoms<const N: usize>(
     degree: usize,
     knots: &[f64],
     [a, b]: [f64; 2],
-    homogeneous: &[[f64; 4]; MAX_ORDER],
-    points: &mut [[f64; 4]; MAX_ORDER],
+    homogeneous: &[[f64; 4]],
+    points: &mut [[f64; 4]],
 ) {
     let mut start = [[0.0; 4]; N];
     start[..=degree].copy_from_slice(&homogeneous[..=degree]);
