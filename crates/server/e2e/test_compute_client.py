@@ -219,7 +219,11 @@ def test_io_names_inputs_and_outputs_as_compute_does(server_url):
     assert types == {"RH_IN:102:0001": "Point", "RH_IN:105:0001": "Number"}
     # The same definition by pointer: a file under --definitions.
     body = {"pointer": "grasshopper/mcneel-compute__simple_circle_one.ghx",
-            "values": [t.data for t in circle_inputs((0, 0, 0), 1.0)]}
+            "values": [
+                {"ParamName": "RH_IN:102:0001", "InnerTree": {"{0}": [
+                    {"type": "Rhino.Geometry.Point3d", "data": '{"X":0,"Y":0,"Z":0}'}]}},
+                {"ParamName": "RH_IN:105:0001", "InnerTree": {"{0}": [
+                    {"type": "System.Double", "data": "1.0"}]}}]}
     answer = requests.post(server_url + "/grasshopper", json=body, timeout=30).json()
     ((centre, _, radius),) = circles(answer, "RH_OUT:109:0001")
     assert close(centre, (0, 0, 0)) and radius == 1.0
