@@ -203,7 +203,11 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
     evaluator.evaluate();
 
     let mut errors: Vec<String> = definition.errors.clone();
-    warnings.splice(0..0, definition.warnings.iter().cloned());
+    if definition.format != crate::definition::Format::Ron {
+        // What the importer said about a Grasshopper file goes with every answer (a RON graph's
+        // checking warnings are in `/io` only).
+        warnings.splice(0..0, definition.warnings.iter().cloned());
+    }
     let mut values = Vec::new();
     let mut count = 0usize;
     for out in &definition.outputs {

@@ -176,3 +176,32 @@ fn a_grasshopper_file_that_does_not_read_is_400() {
     assert_eq!(kind, "bad_definition");
     assert!(m.contains(".ghx file does not read"), "{m}");
 }
+
+#[test]
+fn two_inputs_with_one_compute_name_are_an_error_and_the_first_wins() {
+    let s = start(config());
+    // Both input groups renamed to the point's name: Compute reports the clash with every solve
+    // and keeps the first group (the point); the radius is then no input Compute can set.
+    let text = std::fs::read_to_string(definitions().join(ONE))
+        .unwrap()
+        .replace("RH_IN:105:0001", "RH_IN:102:0001");
+    let algo = base64::engine::general_purpose::STANDARD.encode(text);
+    let io = post(s.addr(), "/io", &json!({"algo": algo})).json();
+    assert_eq!(io["InputNames"], json!(["RH_IN:102:0001"]), "{io}");
+    let answer = post(
+        s.addr(),
+        "/grasshopper",
+        &json!({"algo": algo, "values": inputs([1.0, 2.0, 3.0], 5.0)}),
+    )
+    .json();
+    let errors = answer["errors"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{answer}"));
+    assert!(
+        errors.iter().any(|e| e
+            .as_str()
+            .unwrap()
+            .starts_with("Multiple input parameters with the same name")),
+        "{answer}"
+    );
+}
