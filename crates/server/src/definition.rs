@@ -109,7 +109,8 @@ pub struct Definition {
 /// Why bytes are not a definition this server can run.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum DefinitionError {
-    /// The format is recognised but not readable by this build.
+    /// The bytes do not read in the format they were recognised as (RON that is not UTF-8, a
+    /// Grasshopper archive that does not read).
     #[error("{0}")]
     Unsupported(String),
     /// The definition does not read or check: every error with its line and column.
