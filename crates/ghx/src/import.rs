@@ -18,7 +18,7 @@ use crate::document::{GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree,
 use crate::known::{GROUP, Special, special};
 use crate::limits::Limits;
 use crate::literal;
-use crate::report::{ImportDiagnostic, ObjectRef, Outcome, Report};
+use crate::report::{ComputeName, ImportDiagnostic, ObjectRef, Outcome, Report};
 
 /// The Cluster Input object inside a cluster document.
 const CLUSTER_INPUT: &str = "448de216-7d2b-4e83-8ebf-e6ed0e6a4e0e";
@@ -34,6 +34,10 @@ pub struct Import {
     pub report: Report,
     /// A comment per node: the Grasshopper object it comes from (for the RON writer).
     pub notes: Vec<(NodeId, String)>,
+    /// The names Rhino.Compute gives the graph's inputs, in object order (see [`ComputeName`]).
+    pub compute_inputs: Vec<ComputeName>,
+    /// The names Rhino.Compute gives the graph's outputs, in object order.
+    pub compute_outputs: Vec<ComputeName>,
 }
 
 /// Where the data of a Grasshopper output (or floating parameter) comes from in the graph.
@@ -70,6 +74,9 @@ struct Mapper<'a> {
     /// Fed panels: their name and sources, for named outputs.
     panels: Vec<(String, Vec<String>)>,
     libraries: Vec<crate::document::Library>,
+    /// Rhino.Compute's names: (object index, name, port, canvas y) of inputs and outputs.
+    compute_inputs: Vec<(usize, String, PortRef, f64)>,
+    compute_outputs: Vec<(usize, String, PortRef, f64)>,
 }
 
 struct PendingInput {
@@ -106,6 +113,8 @@ pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limit
         outputs: Vec::new(),
         panels: Vec::new(),
         libraries: doc.libraries.clone(),
+        compute_inputs: Vec::new(),
+        compute_outputs: Vec::new(),
     };
     m.objects(doc, "", 0);
     m.groups(doc);
@@ -260,8 +269,20 @@ impl Mapper<'_> {
                         o.nickname.clone()
                     };
                     if let Some(id) = self.component(o, r, &t, &prefix) {
-                        let port = t.inputs[0].nickname.clone();
-                        self.inputs.push((name, PortRef { node: id, port }));
+                        let port = PortRef {
+                            node: id,
+                            port: t.inputs[0].nickname.clone(),
+                        };
+                        // Compute finds a Hops Get parameter by its nickname.
+                        if cluster.is_empty() {
+                            self.compute_inputs.push((
+                                o.index,
+                                o.nickname.clone(),
+                                port.clone(),
+                                canvas_y(o),
+                            ));
+                        }
+                        self.inputs.push((name, port));
                     }
                 }
                 None => self.unsupported(
@@ -1062,17 +1083,38 @@ impl Mapper<'_> {
                 }
                 _ => name,
             };
+            // Compute knows the grouped object by the group's whole nickname, and only by the
+            // first object of the group.
+            let mut first = true;
             for id in g.container.items_named("ID") {
                 let Some(target) = id.value.as_str() else {
                     continue;
+                };
+                let object = doc.objects.iter().find(|o| o.instance == target);
+                let compute = (first && object.is_some_and(|o| o.outputs.len() <= 1))
+                    .then(|| (g.index, g.nickname.clone(), object.map_or(0.0, canvas_y)));
+                first = false;
+                let record = |this: &mut Self, port: &PortRef| {
+                    if let Some((index, name, y)) = compute.clone() {
+                        let list = if is_in {
+                            &mut this.compute_inputs
+                        } else {
+                            &mut this.compute_outputs
+                        };
+                        list.push((index, name, port.clone(), y));
+                    }
                 };
                 let Some(node) = self.nodes_by_object.get(target).cloned() else {
                     // A group may name a component's port (as `locus export-ghx` writes them).
                     if is_in && let Some(port) = self.input_ports.get(target).cloned() {
                         self.inputs.retain(|(_, p)| *p != port);
-                        self.inputs.push((name.to_owned(), port));
-                    } else if !is_in && let Some(Source::Port(port)) = self.sources.get(target) {
+                        self.inputs.push((name.to_owned(), port.clone()));
+                        record(self, &port);
+                    } else if !is_in
+                        && let Some(Source::Port(port)) = self.sources.get(target).cloned()
+                    {
                         self.outputs.push((name.to_owned(), port.clone()));
+                        record(self, &port);
                     }
                     continue;
                 };
@@ -1087,22 +1129,20 @@ impl Mapper<'_> {
                     if let Some(port) = t.inputs.first() {
                         // The group names the input: replace a name the widget gave it.
                         self.inputs.retain(|(_, p)| p.node != node);
-                        self.inputs.push((
-                            name.to_owned(),
-                            PortRef {
-                                node,
-                                port: port.nickname.clone(),
-                            },
-                        ));
-                    }
-                } else if let Some(port) = t.outputs.first() {
-                    self.outputs.push((
-                        name.to_owned(),
-                        PortRef {
+                        let port = PortRef {
                             node,
                             port: port.nickname.clone(),
-                        },
-                    ));
+                        };
+                        self.inputs.push((name.to_owned(), port.clone()));
+                        record(self, &port);
+                    }
+                } else if let Some(port) = t.outputs.first() {
+                    let port = PortRef {
+                        node,
+                        port: port.nickname.clone(),
+                    };
+                    self.outputs.push((name.to_owned(), port.clone()));
+                    record(self, &port);
                 }
             }
         }
@@ -1151,12 +1191,50 @@ impl Mapper<'_> {
             let name = unique_name(&mut seen, name);
             self.graph.outputs.push(GraphOutput { name, source });
         }
+        let compute_inputs = std::mem::take(&mut self.compute_inputs);
+        let compute_outputs = std::mem::take(&mut self.compute_outputs);
+        let names = |mut list: Vec<(usize, String, PortRef, f64)>, input: bool| {
+            list.sort_by_key(|(index, ..)| *index);
+            list.into_iter()
+                .filter_map(|(_, name, port, canvas_y)| {
+                    let graph = if input {
+                        let i = self.graph.inputs.iter().find(|i| i.target == port)?;
+                        i.name.clone()
+                    } else {
+                        let o = self.graph.outputs.iter().find(|o| o.source == port)?;
+                        o.name.clone()
+                    };
+                    Some(ComputeName {
+                        name,
+                        graph,
+                        canvas_y,
+                    })
+                })
+                .collect::<Vec<_>>()
+        };
+        let compute_inputs = names(compute_inputs, true);
+        let compute_outputs = names(compute_outputs, false);
         Import {
             graph: self.graph,
             report: self.report,
             notes: self.notes,
+            compute_inputs,
+            compute_outputs,
         }
     }
+}
+
+/// The y position of an object on the canvas (its `Attributes/Pivot`), 0 when absent.
+fn canvas_y(o: &GhObject) -> f64 {
+    o.container
+        .chunk("Attributes")
+        .and_then(|a| a.item("Pivot"))
+        .and_then(|p| match p.value {
+            crate::archive::Value::DrawingPointF([_, y]) => Some(f64::from(y)),
+            crate::archive::Value::DrawingPoint([_, y]) => Some(f64::from(y)),
+            _ => None,
+        })
+        .unwrap_or(0.0)
 }
 
 fn unique_name(seen: &mut HashSet<String>, name: String) -> String {

@@ -159,6 +159,7 @@ mod evaluation;
 mod file;
 mod graph;
 mod host;
+mod json;
 mod limits;
 mod message;
 mod node;
@@ -191,6 +192,7 @@ pub use crate::graph::{
     NodeId, PortRef, Wire, text_matches,
 };
 pub use crate::host::{LoadError, load_file};
+pub use crate::json::{MessageJson, TreeJson, ValueJson};
 pub use crate::limits::{
     CancelToken, DEFAULT_MAX_ITEMS_PER_OUTPUT, DEFAULT_MAX_ITEMS_TOTAL, LimitHit, Limits,
     MAX_GRAPH_FILE_BYTES, MAX_TEXT_BYTES, MAX_THREADS_PER_CORE, read_graph_file,
