@@ -282,6 +282,8 @@ impl NurbsSurface {
         }
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
+        // Column j of the rows, gathered across them: an index loop reads more plainly here.
+        #[allow(clippy::needless_range_loop)]
         for j in 0..=q {
             let column: [[f64; 4]; N] = std::array::from_fn(|i| rows[i][j]);
             let mut bezier = [[0.0; 4]; N];
