@@ -16,24 +16,47 @@ pub fn value_text(value: &Value) -> String {
 /// A tree as text: each branch as its path and item count, then its items one per line.
 pub fn tree_text(tree: &DataTree) -> String {
     let mut out = String::new();
+    let mut line = String::new();
+    let _ = tree_lines(tree, &mut line, &mut |l: &str| {
+        out.push_str(l);
+        Ok(true)
+    });
+    out
+}
+
+/// The lines of [`tree_text`], one at a time (each ending in a newline) through `emit`, built in
+/// `line`; stops early, returning `false`, when `emit` returns `false`.
+pub fn tree_lines(
+    tree: &DataTree,
+    line: &mut String,
+    emit: &mut impl FnMut(&str) -> std::io::Result<bool>,
+) -> std::io::Result<bool> {
     if tree.is_empty() {
-        out.push_str("  (empty tree)\n");
+        return emit("  (empty tree)\n");
     }
     for (path, branch) in tree.branches() {
         let n = branch.len();
-        let _ = writeln!(out, "  {path} ({n} item{})", if n == 1 { "" } else { "s" });
+        line.clear();
+        let _ = writeln!(line, "  {path} ({n} item{})", if n == 1 { "" } else { "s" });
+        if !emit(line)? {
+            return Ok(false);
+        }
         for (i, v) in branch.values().enumerate() {
+            line.clear();
             match v {
                 Some(v) => {
-                    let _ = writeln!(out, "    {i}. {}", value_text(&v));
+                    let _ = writeln!(line, "    {i}. {}", value_text(&v));
                 }
                 None => {
-                    let _ = writeln!(out, "    {i}. <null>");
+                    let _ = writeln!(line, "    {i}. <null>");
                 }
+            }
+            if !emit(line)? {
+                return Ok(false);
             }
         }
     }
-    out
+    Ok(true)
 }
 
 fn xyz(x: f64, y: f64, z: f64) -> Json {
