@@ -321,6 +321,15 @@ fn lift2<A: Item, B: Item, O: Item>(
 }
 
 impl NodeType {
+    /// The same node type without its lifted loop and fast paths, so that every call runs the
+    /// general solve function: for tests and benchmarks that compare the two.
+    #[must_use]
+    pub fn general_only(mut self) -> Self {
+        self.lift = None;
+        self.fast_paths.clear();
+        self
+    }
+
     /// Sets the solve function to a plain function of one typed item, lifted by the runtime
     /// over trees: input 0 is read as an `A`, the result is output 0. The input and output
     /// ports are declared as usual, with item access and the types of `A` and `O`.
