@@ -13,19 +13,9 @@ pub fn value_text(value: &Value) -> String {
     format_value(value)
 }
 
-/// A tree as text: each branch as its path and item count, then its items one per line.
-pub fn tree_text(tree: &DataTree) -> String {
-    let mut out = String::new();
-    let mut line = String::new();
-    let _ = tree_lines(tree, &mut line, &mut |l: &str| {
-        out.push_str(l);
-        Ok(true)
-    });
-    out
-}
-
-/// The lines of [`tree_text`], one at a time (each ending in a newline) through `emit`, built in
-/// `line`; stops early, returning `false`, when `emit` returns `false`.
+/// A tree as text, one line at a time (each ending in a newline) through `emit`, built in
+/// `line`: each branch as its path and item count, then its items one per line. Stops early,
+/// returning `false`, when `emit` returns `false`.
 pub fn tree_lines(
     tree: &DataTree,
     line: &mut String,
@@ -200,19 +190,6 @@ fn plane_json(p: &Plane) -> Json {
     })
 }
 
-/// A tree as a JSON object `{"{0;1}": [item, …], …}` in path order.
-pub fn tree_json(tree: &DataTree) -> Json {
-    let mut map = Map::new();
-    for (path, branch) in tree.branches() {
-        let items: Vec<Json> = branch
-            .values()
-            .map(|v| v.as_ref().map_or(Json::Null, value_json))
-            .collect();
-        map.insert(path.to_string(), Json::Array(items));
-    }
-    Json::Object(map)
-}
-
 /// A runtime message as JSON.
 pub fn message_json(m: &Message) -> Json {
     json!({
@@ -267,7 +244,7 @@ mod tests {
     fn trees_render_as_json_objects_by_path() {
         let t = DataTree::from_list(vec![Point3::new(1.0, 2.0, 3.0)]);
         assert_eq!(
-            tree_json(&t).to_string(),
+            serde_json::to_string(&crate::stream::TreeJson(&t)).unwrap(),
             r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
         );
     }

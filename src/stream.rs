@@ -112,28 +112,38 @@ pub(crate) fn write_json(
         kept.push((name, tree));
     }
     let truncated = !omitted.is_empty();
-    let mut serializer = serde_json::Serializer::pretty(&mut *out);
-    let mut doc = serializer
-        .serialize_map(Some(if truncated { 3 } else { 2 }))
-        .map_err(io::Error::other)?;
-    let entries = || -> Result<(), serde_json::Error> {
-        doc.serialize_entry("outputs", &OutputsJson(&kept))?;
-        doc.serialize_entry("messages", &MessagesJson(messages))?;
-        if truncated {
-            doc.serialize_entry(
-                "truncated",
-                &serde_json::json!({ "max_output_bytes": max_bytes, "omitted": omitted }),
-            )?;
-        }
-        Ok(())
+    let document = Document {
+        outputs: OutputsJson(&kept),
+        messages: MessagesJson(messages),
+        truncated: truncated
+            .then(|| serde_json::json!({ "max_output_bytes": max_bytes, "omitted": omitted })),
     };
-    entries().map_err(io::Error::other)?;
-    SerializeMap::end(doc).map_err(io::Error::other)?;
+    serde_json::to_writer_pretty(&mut *out, &document).map_err(io::Error::other)?;
     writeln!(out)?;
     Ok(truncated)
 }
 
-/// Writes the outputs as text (`name:` then the tree, see [`render::tree_text`]) line by line,
+/// The whole JSON document, serialized as it is written.
+struct Document<'a> {
+    outputs: OutputsJson<'a>,
+    messages: MessagesJson<'a>,
+    truncated: Option<serde_json::Value>,
+}
+
+impl Serialize for Document<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let len = if self.truncated.is_some() { 3 } else { 2 };
+        let mut map = serializer.serialize_map(Some(len))?;
+        map.serialize_entry("outputs", &self.outputs)?;
+        map.serialize_entry("messages", &self.messages)?;
+        if let Some(t) = &self.truncated {
+            map.serialize_entry("truncated", t)?;
+        }
+        map.end()
+    }
+}
+
+/// Writes the outputs as text (`name:` then the tree, see [`render::tree_lines`]) line by line,
 /// stopping at the last whole line within `max_bytes`; `safe` makes each line safe for a
 /// terminal. Returns whether the output was cut.
 pub(crate) fn write_text(
