@@ -32,6 +32,7 @@ mod graph_file;
 mod grasshopper;
 mod render;
 mod serve;
+mod stream;
 mod test_graphs;
 mod write_file;
 

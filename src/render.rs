@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use locus_runtime::{DataTree, Message, MessageJson, TreeJson, Value, format_value};
+use locus_runtime::{DataTree, Message, MessageJson, Value, format_value};
 use serde_json::Value as Json;
 
 /// One item as text, the way Grasshopper's panel shows it.
@@ -12,33 +12,40 @@ pub fn value_text(value: &Value) -> String {
     format_value(value)
 }
 
-/// A tree as text: each branch as its path and item count, then its items one per line.
-pub fn tree_text(tree: &DataTree) -> String {
-    let mut out = String::new();
+/// A tree as text, one line at a time (each ending in a newline) through `emit`, built in
+/// `line`: each branch as its path and item count, then its items one per line. Stops early,
+/// returning `false`, when `emit` returns `false`.
+pub fn tree_lines(
+    tree: &DataTree,
+    line: &mut String,
+    emit: &mut impl FnMut(&str) -> std::io::Result<bool>,
+) -> std::io::Result<bool> {
     if tree.is_empty() {
-        out.push_str("  (empty tree)\n");
+        return emit("  (empty tree)\n");
     }
     for (path, branch) in tree.branches() {
         let n = branch.len();
-        let _ = writeln!(out, "  {path} ({n} item{})", if n == 1 { "" } else { "s" });
+        line.clear();
+        let _ = writeln!(line, "  {path} ({n} item{})", if n == 1 { "" } else { "s" });
+        if !emit(line)? {
+            return Ok(false);
+        }
         for (i, v) in branch.values().enumerate() {
+            line.clear();
             match v {
                 Some(v) => {
-                    let _ = writeln!(out, "    {i}. {}", value_text(&v));
+                    let _ = writeln!(line, "    {i}. {}", value_text(&v));
                 }
                 None => {
-                    let _ = writeln!(out, "    {i}. <null>");
+                    let _ = writeln!(line, "    {i}. <null>");
                 }
+            }
+            if !emit(line)? {
+                return Ok(false);
             }
         }
     }
-    out
-}
-
-/// A tree as a JSON object `{"{0;1}": [item, …], …}` in path order: the one JSON form of
-/// values, `locus_runtime::TreeJson` (`docs/json-output.md`).
-pub fn tree_json(tree: &DataTree) -> Json {
-    serde_json::to_value(TreeJson(tree)).unwrap_or(Json::Null)
+    Ok(true)
 }
 
 /// A runtime message as JSON (`locus_runtime::MessageJson`).
@@ -84,13 +91,13 @@ pub fn for_stream<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use locus_runtime::ValueJson;
+    use locus_runtime::{TreeJson, ValueJson};
 
     #[test]
     fn trees_render_as_json_objects_by_path() {
         let t = DataTree::from_list(vec![locus_kernel::Point3::new(1.0, 2.0, 3.0)]);
         assert_eq!(
-            tree_json(&t).to_string(),
+            serde_json::to_string(&TreeJson(&t)).unwrap(),
             r#"{"{0}":[{"point":[1.0,2.0,3.0]}]}"#
         );
     }

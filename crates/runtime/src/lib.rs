@@ -178,6 +178,7 @@ pub use crate::checking::diagnostic::{
 pub use crate::compare::{COMPARE_TOLERANCE, compare_expected, compare_trees, values_agree};
 pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};
+pub use crate::evaluation::lift::{ItemReport, Outputs};
 pub use crate::evaluation::solve::{ListView, Solve};
 pub use crate::file::bless::BlessOutput;
 pub use crate::file::canonical::CommentInside;

@@ -55,6 +55,9 @@ pub(crate) struct NodeRun<'a> {
     pub(crate) matching: Matching,
     pub(crate) principal: Option<usize>,
     pub(crate) prepared: Option<&'a Prepared>,
+    /// For each output, whether anything reads it (a wire, a named output, a host): the others
+    /// are left empty.
+    pub(crate) wanted: &'a [bool],
     /// The item budget, deadline and cancellation.
     pub(crate) budget: &'a Budget,
 }
@@ -271,10 +274,12 @@ fn stitch(node_id: &NodeId, outputs: &[Port], segments: Vec<Segment>) -> NodeOut
     }
 }
 
-fn new_sinks(outputs: &[Port]) -> Vec<OutputSink> {
+fn new_sinks(outputs: &[Port], wanted: &[bool]) -> Vec<OutputSink> {
     outputs
         .iter()
-        .map(|p| OutputSink {
+        .enumerate()
+        .map(|(o, p)| OutputSink {
+            skip: !wanted.get(o).copied().unwrap_or(true),
             access: p.access,
             data_type: p.data_type,
             pieces: Vec::new(),
@@ -286,9 +291,9 @@ fn new_sinks(outputs: &[Port]) -> Vec<OutputSink> {
 
 fn solve_once(run: &NodeRun<'_>, data: &[&DataTree]) -> Segment {
     let path = TreePath::zero();
-    let mut sinks = new_sinks(&run.node_type.outputs);
+    let mut sinks = new_sinks(&run.node_type.outputs, run.wanted);
     for sink in &mut sinks {
-        if sink.access == Access::Item {
+        if sink.access == Access::Item && !sink.skip {
             sink.pieces
                 .push((path.clone(), Branch::new(sink.data_type)));
         }
@@ -328,9 +333,9 @@ fn run_task(
     has_item: bool,
 ) -> Segment {
     let ports = run.inputs;
-    let mut sinks = new_sinks(&run.node_type.outputs);
+    let mut sinks = new_sinks(&run.node_type.outputs, run.wanted);
     for sink in &mut sinks {
-        if sink.access == Access::Item {
+        if sink.access == Access::Item && !sink.skip {
             let column = crate::Column::with_capacity(sink.data_type, task.end - task.start);
             sink.pieces
                 .push((bi.target.clone(), Branch::from_column(column)));
@@ -429,7 +434,7 @@ fn run_task(
             }
         }
         for sink in &mut sinks {
-            if !sink.set {
+            if !sink.set && !sink.skip {
                 match sink.access {
                     Access::Item => {
                         if !empty_gap && let Some((_, b)) = sink.pieces.last_mut() {

@@ -68,6 +68,7 @@ fn run(node: &NodeType, matching: Matching, principal: Option<usize>, inputs: &[
         matching,
         principal,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
@@ -303,6 +304,7 @@ fn failing_iterations_leave_nulls_and_messages() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let out = run_node(&r, &refs, false);
@@ -330,6 +332,7 @@ fn large_branches_give_identical_results_in_parallel() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
