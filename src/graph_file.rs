@@ -8,7 +8,6 @@ use locus_runtime::{
     Checked, DEFAULT_MAX_ITEMS_PER_OUTPUT, DEFAULT_MAX_ITEMS_TOTAL, Diagnostic, Document,
     Evaluator, Level, Limits, MAX_GRAPH_FILE_BYTES, NodeRegistry, read_graph_file, to_dot,
 };
-use serde_json::{Map, Value as Json, json};
 
 use crate::{EXIT_BAD_GRAPH, EXIT_LIMIT, EXIT_RUNTIME_ERROR, EXIT_USAGE, render};
 
@@ -230,56 +229,45 @@ pub(crate) fn run(
         0 => u64::MAX,
         n => n,
     };
-    let mut written: u64 = 0;
-    let mut truncated = false;
-    if json {
-        let mut outputs = Map::new();
-        let mut omitted = Vec::new();
-        for (name, tree) in selected {
-            let value = render::tree_json(tree);
-            let size = serde_json::to_string(&value).map_or(0, |t| t.len() as u64);
-            if truncated || written.saturating_add(size) > max_bytes {
-                truncated = true;
-                omitted.push(name.to_owned());
-                continue;
-            }
-            written += size;
-            outputs.insert(name.to_owned(), value);
-        }
-        let messages: Vec<Json> = evaluator.messages().map(render::message_json).collect();
-        let mut doc = json!({ "outputs": outputs, "messages": messages });
-        if truncated {
-            doc["truncated"] = json!({ "max_output_bytes": max_bytes, "omitted": omitted });
-        }
-        out!("{}", serde_json::to_string_pretty(&doc).unwrap_or_default());
+    let messages: Vec<&locus_runtime::Message> = evaluator.messages().collect();
+    let stdout = std::io::stdout();
+    let safe = std::io::IsTerminal::is_terminal(&stdout);
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let written = if json {
+        crate::stream::write_json(&mut out, &selected, &messages, max_bytes)
     } else {
-        for (name, tree) in selected {
-            let text = format!("{name}:\n{}", render::tree_text(tree));
-            let left = max_bytes - written;
-            if text.len() as u64 > left {
-                // Cut at the last whole line that fits.
-                let cut = usize::try_from(left).unwrap_or(usize::MAX).min(text.len());
-                let cut = text[..text.floor_char_boundary(cut)]
-                    .rfind('\n')
-                    .map_or(0, |i| i + 1);
-                out_str!(&text[..cut]);
-                truncated = true;
-                break;
+        crate::stream::write_text(&mut out, &selected, max_bytes, safe).and_then(|truncated| {
+            use std::io::Write as _;
+            if truncated {
+                writeln!(
+                    out,
+                    "(output truncated: more than {max_bytes} bytes; see --max-output-bytes)"
+                )?;
             }
-            written += text.len() as u64;
-            out_str!(render::for_stream(&text, &std::io::stdout()));
-        }
-        if truncated {
-            out!("(output truncated: more than {max_bytes} bytes; see --max-output-bytes)");
-        }
-        let messages: Vec<String> = evaluator.messages().map(ToString::to_string).collect();
-        if !messages.is_empty() {
-            out!("messages:");
-            for m in messages {
-                out!("  {}", render::for_stream(&m, &std::io::stdout()));
+            if !messages.is_empty() {
+                writeln!(out, "messages:")?;
+                for m in &messages {
+                    let m = m.to_string();
+                    let m = if safe {
+                        render::terminal_safe(&m)
+                    } else {
+                        m.as_str().into()
+                    };
+                    writeln!(out, "  {m}")?;
+                }
             }
-        }
-    }
+            Ok(truncated)
+        })
+    };
+    // A closed stdout (`locus run g.ron | head`) ends the program quietly, as `out!` does.
+    let truncated = match written.and_then(|t| {
+        use std::io::Write as _;
+        out.flush().map(|()| t)
+    }) {
+        Ok(t) => t,
+        Err(_) => std::process::exit(0),
+    };
+    drop(out);
     if truncated {
         eprintln!(
             "locus: limit: the output was truncated at {max_bytes} bytes (--max-output-bytes)"

@@ -33,6 +33,7 @@ mod grasshopper;
 mod progress;
 mod render;
 mod serve;
+mod stream;
 mod test_graphs;
 mod write_file;
 

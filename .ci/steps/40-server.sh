@@ -2,12 +2,13 @@
 # `locus serve` against real clients: the official Rhino.Compute Python client (compute-rhino3d)
 # with rhino3dm decoding the geometry (crates/server/e2e/), the cold start, and a bounded
 # loopback load test mixing good, bad and limit-hitting requests (crates/server/examples/
-# loadtest.rs). Idempotent: the venv is reused when present; every server started here is
+# loadtest.rs), and schemathesis fuzzing the JSON endpoints from the server's /openapi.json.
+# Idempotent: the venv is reused when present; every server started here is
 # stopped by its pid on exit.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 VENV="$(realpath -m "${LOCUS_SERVER_VENV:-target/server-venv}")"
-if ! "$VENV/bin/python" -c "import compute_rhino3d, rhino3dm, pytest, requests" 2>/dev/null; then
+if ! "$VENV/bin/python" -c "import compute_rhino3d, rhino3dm, pytest, requests, schemathesis" 2>/dev/null; then
   if ! python3 -m venv "$VENV" 2>/dev/null; then
     # Debian splits venv (and ensurepip) out of python3.
     apt-get update -qq && apt-get install -y -qq python3-venv >/dev/null
@@ -15,7 +16,8 @@ if ! "$VENV/bin/python" -c "import compute_rhino3d, rhino3dm, pytest, requests" 
     python3 -m venv "$VENV"
   fi
   "$VENV/bin/pip" install --quiet --disable-pip-version-check \
-    "compute-rhino3d==0.12.2" "rhino3dm>=8.9,<9" "pytest>=8,<10" "requests>=2,<3"
+    "compute-rhino3d==0.12.2" "rhino3dm>=8.9,<9" "pytest>=8,<10" "requests>=2,<3" \
+    "schemathesis>=4.3,<5"
 fi
 # What `cargo test --workspace` built (the locus binary, the examples) with the same profile and
 # features, so nothing is built a second time: a no-op after the test command.
@@ -45,6 +47,19 @@ start_server() {
 start_server --definitions crates/server/tests/definitions
 echo "== compute-rhino3d client tests against $URL"
 (cd crates/server/e2e && LOCUS_SERVER_URL="$URL" timeout 300 "$VENV/bin/python" -m pytest -q -p no:cacheprovider .)
+
+echo "== schemathesis against /openapi.json (bounded: 50 examples per operation, 60 s)"
+start_server --definitions crates/server/tests/definitions
+# not_a_server_error fails on any 5xx. The documented ones (an unknown md5_ pointer, the output
+# limit, a full queue, the deadline) need state or load that these requests do not have, so
+# none is expected here; every other status must be a documented 4xx with a reason.
+(cd "$(mktemp -d)" && timeout 170 "$VENV/bin/st" run "$URL/openapi.json" \
+  --checks not_a_server_error,status_code_conformance,content_type_conformance \
+  --max-examples 50 --max-time 60 --seed 14 --workers 2 \
+  --generation-database none --no-color --warnings off)
+kill -0 "$PID" || { echo "locus serve died under schemathesis"; exit 1; }
+[ "$(curl -fsS "$URL/healthcheck")" = "Healthy" ] || { echo "no /healthcheck after fuzzing"; exit 1; }
+echo "server $PID still answers /healthcheck after fuzzing"
 
 echo "== cold start"
 "$VENV/bin/python" crates/server/e2e/cold_start.py "$LOCUS" crates/server/tests/definitions/tangent_spheres.ron

@@ -18,7 +18,10 @@ use crate::document::{GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree,
 use crate::known::{GROUP, Special, special};
 use crate::limits::Limits;
 use crate::literal;
-use crate::report::{ImportDiagnostic, ObjectRef, Outcome, Report};
+use crate::report::{ComputeName, ImportDiagnostic, ObjectRef, Outcome, Report};
+
+mod special;
+mod wiring;
 
 /// The Cluster Input object inside a cluster document.
 const CLUSTER_INPUT: &str = "448de216-7d2b-4e83-8ebf-e6ed0e6a4e0e";
@@ -34,6 +37,10 @@ pub struct Import {
     pub report: Report,
     /// A comment per node: the Grasshopper object it comes from (for the RON writer).
     pub notes: Vec<(NodeId, String)>,
+    /// The names Rhino.Compute gives the graph's inputs, in object order (see [`ComputeName`]).
+    pub compute_inputs: Vec<ComputeName>,
+    /// The names Rhino.Compute gives the graph's outputs, in object order.
+    pub compute_outputs: Vec<ComputeName>,
 }
 
 /// Where the data of a Grasshopper output (or floating parameter) comes from in the graph.
@@ -70,6 +77,9 @@ struct Mapper<'a> {
     /// Fed panels: their name and sources, for named outputs.
     panels: Vec<(String, Vec<String>)>,
     libraries: Vec<crate::document::Library>,
+    /// Rhino.Compute's names: (object index, name, port, canvas y) of inputs and outputs.
+    compute_inputs: Vec<(usize, String, PortRef, f64)>,
+    compute_outputs: Vec<(usize, String, PortRef, f64)>,
 }
 
 struct PendingInput {
@@ -106,6 +116,8 @@ pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limit
         outputs: Vec::new(),
         panels: Vec::new(),
         libraries: doc.libraries.clone(),
+        compute_inputs: Vec::new(),
+        compute_outputs: Vec::new(),
     };
     m.objects(doc, "", 0);
     m.groups(doc);
@@ -245,6 +257,8 @@ impl Mapper<'_> {
             Some(Special::PassThrough) => self.pass_through(o, r, &prefix),
             Some(
                 s @ (Special::Slider
+                | Special::Knob
+                | Special::MdSlider
                 | Special::Panel
                 | Special::Toggle
                 | Special::Button
@@ -258,8 +272,20 @@ impl Mapper<'_> {
                         o.nickname.clone()
                     };
                     if let Some(id) = self.component(o, r, &t, &prefix) {
-                        let port = t.inputs[0].nickname.clone();
-                        self.inputs.push((name, PortRef { node: id, port }));
+                        let port = PortRef {
+                            node: id,
+                            port: t.inputs[0].nickname.clone(),
+                        };
+                        // Compute finds a Hops Get parameter by its nickname.
+                        if cluster.is_empty() {
+                            self.compute_inputs.push((
+                                o.index,
+                                o.nickname.clone(),
+                                port.clone(),
+                                canvas_y(o),
+                            ));
+                        }
+                        self.inputs.push((name, port));
                     }
                 }
                 None => self.unsupported(
@@ -633,419 +659,6 @@ impl Mapper<'_> {
         }
     }
 
-    fn pass_through(&mut self, o: &GhObject, r: ObjectRef, prefix: &str) {
-        let Some(p) = o.inputs.first() else {
-            self.report.objects.push((r, Outcome::Ignored));
-            return;
-        };
-        let has_data = p
-            .persistent
-            .as_ref()
-            .is_some_and(|t| !t.branches.is_empty());
-        if p.sources.is_empty() && has_data || !p.modifiers.is_empty() {
-            // Data typed in, or modifiers to apply: a generic parameter node keeps them.
-            if let Some(t) = self.registry.get("params.geometry").cloned()
-                && t.inputs
-                    .first()
-                    .is_some_and(|i| i.data_type == DataType::Generic)
-            {
-                self.component(o, r, &t, prefix);
-                return;
-            }
-        }
-        self.sources
-            .insert(p.instance.clone(), Source::Through(p.sources.clone()));
-        self.report.objects.push((r, Outcome::PassThrough));
-    }
-
-    fn widget(&mut self, o: &GhObject, r: ObjectRef, kind: Special, prefix: &str) {
-        let c = &o.container;
-        let fed = o.inputs.first().is_some_and(|p| !p.sources.is_empty());
-        let name = if o.nickname.trim().is_empty() {
-            o.type_name.clone()
-        } else {
-            o.nickname.clone()
-        };
-        if kind == Special::Panel && fed {
-            let sources = o.inputs[0].sources.clone();
-            self.sources.insert(
-                o.outputs[0].instance.clone(),
-                Source::Through(sources.clone()),
-            );
-            self.panels.push((name, sources));
-            self.report.objects.push((r, Outcome::PassThrough));
-            return;
-        }
-        let (node_type, items, note): (&str, Vec<GhItem>, String) = match kind {
-            Special::Slider => {
-                let s = c.chunk("Slider");
-                let get = |n: &str| s.and_then(|s| s.f64(n));
-                let value = get("Value").unwrap_or(0.0);
-                let kind = match s.and_then(|s| s.i64("Interval")) {
-                    Some(1) => "integer",
-                    Some(2) => "even",
-                    Some(3) => "odd",
-                    _ => "float",
-                };
-                let note = format!(
-                    "Number Slider \"{}\": {kind}, {} to {}, {} digits",
-                    o.nickname,
-                    literal::number(get("Min").unwrap_or(0.0)),
-                    literal::number(get("Max").unwrap_or(1.0)),
-                    get("Digits").unwrap_or(0.0)
-                );
-                ("params.number", vec![GhItem::Number(value)], note)
-            }
-            Special::Panel => {
-                let text = c.str("UserText").unwrap_or_default();
-                let multiline = c
-                    .chunk("PanelProperties")
-                    .and_then(|p| p.bool("Multiline"))
-                    .unwrap_or(true);
-                let items = if text.is_empty() {
-                    Vec::new()
-                } else if multiline {
-                    vec![GhItem::Text(text.to_owned())]
-                } else {
-                    text.lines().map(|l| GhItem::Text(l.to_owned())).collect()
-                };
-                ("params.text", items, format!("Panel \"{}\"", o.nickname))
-            }
-            Special::Toggle => (
-                "params.boolean",
-                vec![GhItem::Boolean(c.bool("ToggleValue").unwrap_or(false))],
-                format!("Boolean Toggle \"{}\"", o.nickname),
-            ),
-            Special::Button => (
-                "params.boolean",
-                vec![GhItem::Boolean(false)],
-                format!("Button \"{}\" (not pressed)", o.nickname),
-            ),
-            _ => {
-                let mut values = Vec::new();
-                let mut numeric = true;
-                for item in c.chunks_named("ListItem") {
-                    if item.bool("Selected") == Some(true) {
-                        let e = item.str("Expression").unwrap_or_default().trim();
-                        match crate::xml::parse_float(e) {
-                            Ok(x) => values.push(GhItem::Number(x)),
-                            Err(_) => {
-                                numeric = false;
-                                values.push(GhItem::Text(e.trim_matches('"').to_owned()));
-                            }
-                        }
-                    }
-                }
-                let node_type = if numeric {
-                    "params.number"
-                } else {
-                    "params.text"
-                };
-                (node_type, values, format!("Value List \"{}\"", o.nickname))
-            }
-        };
-        let Some(t) = self.registry.get(node_type).cloned() else {
-            self.unsupported(o, r, "component", format!("no {node_type} in the registry"));
-            return;
-        };
-        let mut widget = o.clone();
-        if let Some(p) = widget.inputs.first_mut() {
-            p.persistent = (!items.is_empty()).then(|| GhTree {
-                branches: vec![(vec![0], items)],
-            });
-        }
-        if let Some(id) = self.component(&widget, r, &t, prefix) {
-            if let Some(n) = self.notes.iter_mut().find(|(n, _)| *n == id) {
-                n.1 = note;
-            }
-            if !fed {
-                let port = t.inputs[0].nickname.clone();
-                self.inputs.push((name, PortRef { node: id, port }));
-            }
-        }
-    }
-
-    fn cluster(&mut self, o: &GhObject, r: ObjectRef, prefix: &str, depth: usize) {
-        let Some(bytes) = o
-            .container
-            .item("ClusterDocument")
-            .and_then(|i| match &i.value {
-                crate::archive::Value::Bytes(b) => Some(b.clone()),
-                _ => None,
-            })
-        else {
-            self.unsupported(o, r, "cluster", "the cluster has no document".to_owned());
-            return;
-        };
-        let inner = match read_cluster(&bytes, self.limits, depth + 1) {
-            Ok(d) => d,
-            Err(e) => {
-                self.unsupported(o, r, "cluster", format!("its document does not read: {e}"));
-                return;
-            }
-        };
-        let base = slug(if o.nickname.is_empty() {
-            &o.name
-        } else {
-            &o.nickname
-        });
-        let path = self.unique_id(prefix, &base).0;
-        // The cluster's ports are the Cluster Input and Output objects inside, in order.
-        let boundary_in: Vec<&GhObject> = inner
-            .objects
-            .iter()
-            .filter(|x| x.type_guid == CLUSTER_INPUT)
-            .collect();
-        let boundary_out: Vec<&GhObject> = inner
-            .objects
-            .iter()
-            .filter(|x| x.type_guid == CLUSTER_OUTPUT)
-            .collect();
-        if boundary_in.len() != o.inputs.len() || boundary_out.len() != o.outputs.len() {
-            self.unsupported(
-                o,
-                r,
-                "cluster",
-                format!(
-                    "its ports ({} in, {} out) do not match its document ({} in, {} out)",
-                    o.inputs.len(),
-                    o.outputs.len(),
-                    boundary_in.len(),
-                    boundary_out.len()
-                ),
-            );
-            return;
-        }
-        self.report.objects.push((r.clone(), Outcome::PassThrough));
-        // Outer input k feeds the inner Cluster Input k; inner Cluster Output k is outer
-        // output k.
-        for (outer, inner_in) in o.inputs.iter().zip(&boundary_in) {
-            if let Some(p) = inner_in.outputs.first() {
-                self.sources
-                    .insert(p.instance.clone(), Source::Through(outer.sources.clone()));
-            }
-        }
-        for (outer, inner_out) in o.outputs.iter().zip(&boundary_out) {
-            if let Some(p) = inner_out.inputs.first() {
-                self.sources
-                    .insert(outer.instance.clone(), Source::Through(p.sources.clone()));
-            }
-        }
-        let cluster_path = path.clone();
-        let rest = GhDocument {
-            objects: inner
-                .objects
-                .iter()
-                .filter(|x| x.type_guid != CLUSTER_INPUT && x.type_guid != CLUSTER_OUTPUT)
-                .cloned()
-                .collect(),
-            libraries: inner.libraries.clone(),
-            ..GhDocument::default()
-        };
-        let saved = std::mem::replace(&mut self.libraries, rest.libraries.clone());
-        self.objects(&rest, &cluster_path, depth + 1);
-        self.libraries = saved;
-    }
-
-    /// The data type of a port of a node already in the graph.
-    fn port_type(&self, port: &PortRef, input: bool) -> Option<DataType> {
-        let node = &self.graph.nodes[*self.node_pos.get(&port.node)?];
-        let t = self.registry.get(&node.node_type)?;
-        if input {
-            t.resolve_inputs(node.input_names.as_deref())
-                .iter()
-                .find(|p| p.is_named(&port.port))
-                .map(|p| p.data_type)
-        } else {
-            t.outputs
-                .iter()
-                .find(|p| p.is_named(&port.port))
-                .map(|p| p.data_type)
-        }
-    }
-
-    /// Resolves an output GUID to node ports, following pass-throughs.
-    fn resolve(&self, guid: &str, seen: &mut Vec<String>, out: &mut Vec<Result<PortRef, String>>) {
-        if seen.iter().any(|s| s == guid) || seen.len() > 256 {
-            out.push(Err("a loop of pass-through parameters".to_owned()));
-            return;
-        }
-        match self.sources.get(guid) {
-            Some(Source::Port(p)) => out.push(Ok(p.clone())),
-            Some(Source::Missing(why)) => out.push(Err(why.clone())),
-            Some(Source::Through(next)) => {
-                seen.push(guid.to_owned());
-                for n in next {
-                    self.resolve(n, seen, out);
-                }
-                seen.pop();
-            }
-            None => out.push(Err(format!("no data from an unknown object {guid}"))),
-        }
-    }
-
-    fn wire(&mut self) {
-        let pending = std::mem::take(&mut self.pending);
-        for input in pending {
-            let mut resolved = Vec::new();
-            for s in &input.sources {
-                self.resolve(s, &mut Vec::new(), &mut resolved);
-            }
-            let mut missing = false;
-            let mut wired = false;
-            for r in resolved {
-                match r {
-                    Ok(from) => {
-                        let (a, b) = (
-                            self.port_type(&from, false),
-                            self.port_type(
-                                &PortRef {
-                                    node: input.node.clone(),
-                                    port: input.port.clone(),
-                                },
-                                true,
-                            ),
-                        );
-                        if let (Some(a), Some(b)) = (a, b)
-                            && !locus_runtime::can_cast(a, b)
-                        {
-                            missing = true;
-                            self.diag(
-                                Level::Warning,
-                                "no-cast",
-                                format!(
-                                    "node \"{}\" input {}: the wire from {from} carries {} data, which does not cast to {}; left out",
-                                    input.node,
-                                    input.port,
-                                    a.name(),
-                                    b.name()
-                                ),
-                                Some(input.object.clone()),
-                                Some(input.node.clone()),
-                                Some(input.port.clone()),
-                            );
-                            continue;
-                        }
-                        wired = true;
-                        self.graph.wires.push(Wire {
-                            from,
-                            to: PortRef {
-                                node: input.node.clone(),
-                                port: input.port.clone(),
-                            },
-                        });
-                    }
-                    Err(why) => {
-                        missing = true;
-                        self.diag(
-                            Level::Warning,
-                            "no-data",
-                            format!("node \"{}\" input {}: {why}", input.node, input.port),
-                            Some(input.object.clone()),
-                            Some(input.node.clone()),
-                            Some(input.port.clone()),
-                        );
-                    }
-                }
-            }
-            if missing
-                && !wired
-                && let Some(&k) = self.node_pos.get(&input.node)
-            {
-                let node = &mut self.graph.nodes[k];
-                // Nothing reaches the input: it is empty (no branches), so the node runs on no
-                // data, as in Grasshopper, instead of the graph failing to check.
-                node.values.retain(|(p, _)| *p != input.port);
-                node.values
-                    .push((input.port.clone(), Literal("{}".to_owned())));
-            }
-        }
-        let panels = std::mem::take(&mut self.panels);
-        for (name, sources) in panels {
-            let mut resolved = Vec::new();
-            for s in &sources {
-                self.resolve(s, &mut Vec::new(), &mut resolved);
-            }
-            let ports: Vec<PortRef> = resolved.into_iter().filter_map(Result::ok).collect();
-            let many = ports.len() > 1;
-            for (k, p) in ports.into_iter().enumerate() {
-                let n = if many {
-                    format!("{name} {}", k + 1)
-                } else {
-                    name.clone()
-                };
-                self.outputs.push((n, p));
-            }
-        }
-    }
-
-    /// `RH_IN:name` / `RH_OUT:name` groups.
-    fn groups(&mut self, doc: &GhDocument) {
-        for g in doc.objects.iter().filter(|o| o.type_guid == GROUP) {
-            let (is_in, name) = if let Some(n) = g.nickname.strip_prefix("RH_IN:") {
-                (true, n)
-            } else if let Some(n) = g.nickname.strip_prefix("RH_OUT:") {
-                (false, n)
-            } else {
-                continue;
-            };
-            // The old convention puts a type code first: `RH_IN:102:name`.
-            let name = match name.split_once(':') {
-                Some((code, rest))
-                    if !rest.is_empty()
-                        && code.len() == 3
-                        && code.bytes().all(|b| b.is_ascii_digit()) =>
-                {
-                    rest
-                }
-                _ => name,
-            };
-            for id in g.container.items_named("ID") {
-                let Some(target) = id.value.as_str() else {
-                    continue;
-                };
-                let Some(node) = self.nodes_by_object.get(target).cloned() else {
-                    // A group may name a component's port (as `locus export-ghx` writes them).
-                    if is_in && let Some(port) = self.input_ports.get(target).cloned() {
-                        self.inputs.retain(|(_, p)| *p != port);
-                        self.inputs.push((name.to_owned(), port));
-                    } else if !is_in && let Some(Source::Port(port)) = self.sources.get(target) {
-                        self.outputs.push((name.to_owned(), port.clone()));
-                    }
-                    continue;
-                };
-                let Some(graph_node) = self.node_pos.get(&node).map(|&k| &self.graph.nodes[k])
-                else {
-                    continue;
-                };
-                let Some(t) = self.registry.get(&graph_node.node_type) else {
-                    continue;
-                };
-                if is_in {
-                    if let Some(port) = t.inputs.first() {
-                        // The group names the input: replace a name the widget gave it.
-                        self.inputs.retain(|(_, p)| p.node != node);
-                        self.inputs.push((
-                            name.to_owned(),
-                            PortRef {
-                                node,
-                                port: port.nickname.clone(),
-                            },
-                        ));
-                    }
-                } else if let Some(port) = t.outputs.first() {
-                    self.outputs.push((
-                        name.to_owned(),
-                        PortRef {
-                            node,
-                            port: port.nickname.clone(),
-                        },
-                    ));
-                }
-            }
-        }
-    }
-
     fn finish(mut self) -> Import {
         // Values in port order, whichever step set them.
         for node in &mut self.graph.nodes {
@@ -1089,12 +702,50 @@ impl Mapper<'_> {
             let name = unique_name(&mut seen, name);
             self.graph.outputs.push(GraphOutput { name, source });
         }
+        let compute_inputs = std::mem::take(&mut self.compute_inputs);
+        let compute_outputs = std::mem::take(&mut self.compute_outputs);
+        let names = |mut list: Vec<(usize, String, PortRef, f64)>, input: bool| {
+            list.sort_by_key(|(index, ..)| *index);
+            list.into_iter()
+                .filter_map(|(_, name, port, canvas_y)| {
+                    let graph = if input {
+                        let i = self.graph.inputs.iter().find(|i| i.target == port)?;
+                        i.name.clone()
+                    } else {
+                        let o = self.graph.outputs.iter().find(|o| o.source == port)?;
+                        o.name.clone()
+                    };
+                    Some(ComputeName {
+                        name,
+                        graph,
+                        canvas_y,
+                    })
+                })
+                .collect::<Vec<_>>()
+        };
+        let compute_inputs = names(compute_inputs, true);
+        let compute_outputs = names(compute_outputs, false);
         Import {
             graph: self.graph,
             report: self.report,
             notes: self.notes,
+            compute_inputs,
+            compute_outputs,
         }
     }
+}
+
+/// The y position of an object on the canvas (its `Attributes/Pivot`), 0 when absent.
+fn canvas_y(o: &GhObject) -> f64 {
+    o.container
+        .chunk("Attributes")
+        .and_then(|a| a.item("Pivot"))
+        .and_then(|p| match p.value {
+            crate::archive::Value::DrawingPointF([_, y]) => Some(f64::from(y)),
+            crate::archive::Value::DrawingPoint([_, y]) => Some(f64::from(y)),
+            _ => None,
+        })
+        .unwrap_or(0.0)
 }
 
 fn unique_name(seen: &mut HashSet<String>, name: String) -> String {

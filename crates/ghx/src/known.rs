@@ -10,6 +10,10 @@ pub enum Special {
     /// Number Slider: a Number parameter with the slider's value (range and digits kept as
     /// input metadata).
     Slider,
+    /// Control Knob: a Number parameter with the knob's value.
+    Knob,
+    /// MD Slider: a Point parameter at the slider's position mapped onto its domains.
+    MdSlider,
     /// Panel: a Text parameter with the panel's text when nothing feeds it; a pass-through
     /// (and a named output) when something does.
     Panel,
@@ -49,6 +53,16 @@ pub const KNOWN: &[(&str, &str, Special)] = &[
         "59e0b89a-e487-49f8-bab8-b5bab16be14c",
         "Panel",
         Special::Panel,
+    ),
+    (
+        "bcac2747-348b-4edd-ae1f-77a782cebbdd",
+        "Control Knob",
+        Special::Knob,
+    ),
+    (
+        "318dacd7-9073-4ede-b043-a0c132eb77e0",
+        "MD Slider",
+        Special::MdSlider,
     ),
     (
         "2e78987b-9dfb-42a2-8b76-3923ac8bd91a",

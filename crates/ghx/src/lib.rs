@@ -41,7 +41,7 @@ pub use crate::export::{ExportError, ExportWarning, export_ghx};
 pub use crate::import::{Import, import_document};
 pub use crate::known::{KNOWN, Special, special};
 pub use crate::limits::Limits;
-pub use crate::report::{ImportDiagnostic, ObjectRef, Outcome, Report};
+pub use crate::report::{ComputeName, ImportDiagnostic, ObjectRef, Outcome, Report};
 pub use crate::ron::to_ron;
 pub use crate::xml::read_xml;
 

@@ -35,6 +35,23 @@ impl std::fmt::Display for ObjectRef {
     }
 }
 
+/// How Rhino.Compute names one input or output of a definition, and which graph input or
+/// output it is.
+///
+/// Compute finds an input by the whole nickname of the group it is the first object of
+/// (`RH_IN:radius`, also the old `RH_IN:102:0001` with its type code), or by the nickname of a
+/// Hops Get parameter; an output by the whole nickname of its `RH_OUT` group. The graph's own
+/// names drop the `RH_IN:`/`RH_OUT:` prefix and type code, and are made unique.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ComputeName {
+    /// Compute's name, as clients send it in `ParamName`.
+    pub name: String,
+    /// The graph input or output's name.
+    pub graph: String,
+    /// The y position of the object on the canvas (Compute's `/io` lists them top to bottom).
+    pub canvas_y: f64,
+}
+
 /// What became of one object.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Outcome {

@@ -60,6 +60,10 @@ fn treatment(s: Special) -> &'static str {
         Special::Panel => {
             "Text parameter with the panel's text (a named input); fed: pass-through and named output"
         }
+        Special::Knob => "Number parameter with the dial's value (a named input)",
+        Special::MdSlider => {
+            "Point parameter at the slider's position on its domains (a named input)"
+        }
         Special::Toggle => "Boolean parameter with the toggle's state (a named input)",
         Special::Button => "Boolean parameter, false (a named input)",
         Special::ValueList => "Number (or Text) parameter with the selected values (a named input)",

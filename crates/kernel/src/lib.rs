@@ -11,6 +11,15 @@
 //! - Control points are Euclidean with a separate weight; the homogeneous point is `(w·p, w)`.
 //! - Tolerances are named constants in [`tolerance`].
 //!
+//! # Performance
+//! Batch evaluation is measured by the `curve_eval` and `surface_eval` benchmarks (figures in
+//! their headers). Divisions, closest points and sphere construction are measured by the
+//! `queries` benchmark beside baselines in the same run, with the figures in
+//! `docs/performance-kernel.md`: 1M divisions of a 61-span cubic take 0.76 s of CPU time
+//! (about 186 batch point evaluations each), because one length table serves all the divisions.
+//! A curve closest point costs about 170 to 230 point evaluations, and a sphere's NURBS surface
+//! 0.2 µs.
+//!
 //! # Examples
 //! ```
 //! use locus_kernel::{Point3, Vector3};

@@ -134,6 +134,7 @@ impl<'a> NodeCall<'a> {
         let mut evaluator = Evaluator::new(plan);
         // A single thread keeps node tests deterministic and free of pool start-up.
         let _ = evaluator.set_threads(1);
+        evaluator.keep_all_outputs();
         evaluator.evaluate();
         let outputs = (0..self.node_type.outputs.len())
             .map(|k| evaluator.node_output_at(0, k).clone())

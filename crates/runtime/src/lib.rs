@@ -159,6 +159,7 @@ mod evaluation;
 mod file;
 mod graph;
 mod host;
+mod json;
 mod limits;
 mod message;
 mod node;
@@ -177,6 +178,7 @@ pub use crate::checking::diagnostic::{
 pub use crate::compare::{COMPARE_TOLERANCE, compare_expected, compare_trees, values_agree};
 pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};
+pub use crate::evaluation::lift::{ItemReport, Outputs};
 pub use crate::evaluation::progress::Progress;
 pub use crate::evaluation::solve::{ListView, Solve};
 pub use crate::file::bless::BlessOutput;
@@ -192,6 +194,7 @@ pub use crate::graph::{
     NodeId, PortRef, Wire, text_matches,
 };
 pub use crate::host::{LoadError, load_file};
+pub use crate::json::{MessageJson, TreeJson, ValueJson};
 pub use crate::limits::{
     CancelToken, DEFAULT_MAX_ITEMS_PER_OUTPUT, DEFAULT_MAX_ITEMS_TOTAL, LimitHit, Limits,
     MAX_GRAPH_FILE_BYTES, MAX_TEXT_BYTES, MAX_THREADS_PER_CORE, read_graph_file,

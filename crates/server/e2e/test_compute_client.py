@@ -139,10 +139,91 @@ def test_caller_errors_are_400_with_a_reason(server_url):
     assert r.status_code == 400 and "not JSON" in r.json()["error"]["message"]
 
 
-def test_compute_sample_ghx_is_refused_clearly_until_grasshopper_files_load(server_url):
-    # mcneel/compute's own sample (copied from shared/ghx/public). Grasshopper files are read
-    # by the locus-ghx crate, which this build does not have yet: the answer says so.
-    sample = os.path.join(HERE, "samples_simple_circle_one.ghx")
-    answer = gh.EvaluateDefinition(sample, [])
-    assert answer["error"]["status"] == 400
-    assert ".ghx" in answer["error"]["message"]
+SAMPLES = os.path.join(DEFS, "grasshopper")
+
+
+def circle_inputs(centre, radius):
+    """The inputs of mcneel/compute's circle samples: Compute names them by their whole group
+    nickname, type code included (the point is `RH_IN:102:0001`, the radius `RH_IN:105:0001`)."""
+    pt = gh.DataTree("RH_IN:102:0001")
+    pt.Append([0], [rhino3dm.Point3d(*centre)])
+    r = gh.DataTree("RH_IN:105:0001")
+    r.Append([0], [radius])
+    return [pt, r]
+
+
+def circles(answer, name):
+    """The circles of one output, decoded: [(centre, normal, radius), ...] in order."""
+    (tree,) = [t for t in answer["values"] if t["ParamName"] == name]
+    out = []
+    for branch in tree["InnerTree"].values():
+        for item in branch:
+            assert item["type"] == "Rhino.Geometry.Circle", item
+            c = json.loads(item["data"])
+            o, z = c["Plane"]["Origin"], c["Plane"]["ZAxis"]
+            out.append(((o["X"], o["Y"], o["Z"]), (z["X"], z["Y"], z["Z"]), c["Radius"]))
+    return out
+
+
+def close(a, b, tol=1e-9):
+    return all(abs(x - y) <= tol for x, y in zip(a, b))
+
+
+def test_compute_sample_simple_circle_one(server_url):
+    # The definition (crates/server/tests/definitions/grasshopper/, from mcneel/compute): Circle
+    # CNR with centre the point input, radius the number input, and normal (0, 0, 1) typed into
+    # the component; the circle goes to a Circle parameter grouped as RH_OUT:109:0001. So the
+    # answer is one circle centred at the point we send, in the XY plane, of the radius we send.
+    answer = gh.EvaluateDefinition(
+        os.path.join(SAMPLES, "mcneel-compute__simple_circle_one.ghx"),
+        circle_inputs((3.0, 4.0, 0.5), 2.5))
+    assert "errors" not in answer, answer.get("errors")
+    assert [t["ParamName"] for t in answer["values"]] == ["RH_OUT:109:0001"]
+    ((centre, normal, radius),) = circles(answer, "RH_OUT:109:0001")
+    assert close(centre, (3.0, 4.0, 0.5)) and close(normal, (0, 0, 1)) and radius == 2.5
+    # rhino3dm agrees that this circle has the expected length (2 pi r) and centre.
+    c = rhino3dm.Circle(rhino3dm.Point3d(*centre), radius)
+    assert abs(c.Circumference - 2 * math.pi * 2.5) < 1e-12
+
+
+def test_compute_sample_simple_circle_array(server_url):
+    # The same circle (RH_OUT:109:0001), divided by Divide Curve into N = 10 equal segments
+    # (typed into the component; K = false), and a circle of the same radius centred at each of
+    # the 10 division points (RH_OUT:109:0002). The circle starts on its plane's x axis, which
+    # for the normal (0, 0, 1) is the world x axis, so point k is centre + r (cos 2 pi k / 10,
+    # sin 2 pi k / 10, 0).
+    cx, cy, cz, r = 1.0, -2.0, 0.0, 4.0
+    answer = gh.EvaluateDefinition(
+        os.path.join(SAMPLES, "mcneel-compute__simple_circle_array.ghx"),
+        circle_inputs((cx, cy, cz), r))
+    assert "errors" not in answer, answer.get("errors")
+    assert [t["ParamName"] for t in answer["values"]] == ["RH_OUT:109:0001", "RH_OUT:109:0002"]
+    ((centre, _, radius),) = circles(answer, "RH_OUT:109:0001")
+    assert close(centre, (cx, cy, cz)) and radius == r
+    ring = circles(answer, "RH_OUT:109:0002")
+    assert len(ring) == 10
+    for k, (centre, normal, radius) in enumerate(ring):
+        a = 2 * math.pi * k / 10
+        assert close(centre, (cx + r * math.cos(a), cy + r * math.sin(a), cz)), (k, centre)
+        assert close(normal, (0, 0, 1)) and abs(radius - r) < 1e-12
+
+
+def test_io_names_inputs_and_outputs_as_compute_does(server_url):
+    with open(os.path.join(SAMPLES, "mcneel-compute__simple_circle_array.ghx"), "rb") as f:
+        import base64
+        algo = base64.b64encode(f.read()).decode()
+    io = requests.post(server_url + "/io", json={"algo": algo}, timeout=30).json()
+    assert sorted(io["InputNames"]) == ["RH_IN:102:0001", "RH_IN:105:0001"]
+    assert io["OutputNames"] == ["RH_OUT:109:0001", "RH_OUT:109:0002"]
+    types = {i["Name"]: i["ParamType"] for i in io["Inputs"]}
+    assert types == {"RH_IN:102:0001": "Point", "RH_IN:105:0001": "Number"}
+    # The same definition by pointer: a file under --definitions.
+    body = {"pointer": "grasshopper/mcneel-compute__simple_circle_one.ghx",
+            "values": [
+                {"ParamName": "RH_IN:102:0001", "InnerTree": {"{0}": [
+                    {"type": "Rhino.Geometry.Point3d", "data": '{"X":0,"Y":0,"Z":0}'}]}},
+                {"ParamName": "RH_IN:105:0001", "InnerTree": {"{0}": [
+                    {"type": "System.Double", "data": "1.0"}]}}]}
+    answer = requests.post(server_url + "/grasshopper", json=body, timeout=30).json()
+    ((centre, _, radius),) = circles(answer, "RH_OUT:109:0001")
+    assert close(centre, (0, 0, 0)) and radius == 1.0

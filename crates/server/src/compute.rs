@@ -100,7 +100,8 @@ fn decode_tree(
     items: &mut usize,
     max_items: usize,
 ) -> Result<DataTree, ApiError> {
-    let name = &input.name;
+    // Errors name the input as the caller did.
+    let name = &tree.param_name;
     let mut out = DataTree::new();
     for (key, branch) in &tree.inner_tree {
         let path =
@@ -149,14 +150,18 @@ pub fn apply_inputs(
     let mut seen = HashSet::new();
     let mut items = 0;
     for tree in values {
-        let Some(input) = definition.inputs.iter().find(|i| i.name == tree.param_name) else {
+        let Some(input) = definition
+            .inputs
+            .iter()
+            .find(|i| i.compute_name.as_deref() == Some(tree.param_name.as_str()))
+        else {
             skipped.push(tree.param_name.clone());
             continue;
         };
         if !seen.insert(input.name.as_str()) {
             warnings.push(format!(
                 "input \"{}\" is sent more than once; the first is used",
-                input.name
+                tree.param_name
             ));
             continue;
         }
@@ -197,10 +202,18 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
     )?;
     evaluator.evaluate();
 
-    let mut errors: Vec<String> = Vec::new();
+    let mut errors: Vec<String> = definition.errors.clone();
+    if definition.format != crate::definition::Format::Ron {
+        // What the importer said about a Grasshopper file goes with every answer (a RON graph's
+        // checking warnings are in `/io` only).
+        warnings.splice(0..0, definition.warnings.iter().cloned());
+    }
     let mut values = Vec::new();
     let mut count = 0usize;
     for out in &definition.outputs {
+        let Some(compute_name) = &out.compute_name else {
+            continue;
+        };
         let Some(tree) = evaluator.output(&out.name) else {
             continue;
         };
@@ -223,12 +236,12 @@ pub fn solve(state: &State, body: &[u8]) -> Result<Json, ApiError> {
                 let Some(v) = v else { continue };
                 match encode_value(&v) {
                     Ok((t, data)) => items.push(json!({"type": t, "data": data})),
-                    Err(e) => errors.push(format!("output \"{}\" {path}[{i}]: {e}", out.name)),
+                    Err(e) => errors.push(format!("output \"{compute_name}\" {path}[{i}]: {e}")),
                 }
             }
             inner.insert(path.to_string(), Json::Array(items));
         }
-        values.push(json!({"ParamName": out.name, "InnerTree": inner}));
+        values.push(json!({"ParamName": compute_name, "InnerTree": inner}));
     }
     for m in evaluator.messages() {
         match m.level {
@@ -315,10 +328,22 @@ pub fn io(state: &State, body: &[u8]) -> Result<Json, ApiError> {
     let request = parse_request(body)?;
     let entry = state.resolve(request.algo.as_deref(), request.pointer.as_deref())?;
     let d = &entry.definition;
-    let inputs: Vec<Json> = d
+    // Compute lists inputs and outputs top to bottom on the canvas.
+    let mut visible_inputs: Vec<(&InputInfo, &str)> = d
         .inputs
         .iter()
-        .map(|i| {
+        .filter_map(|i| Some((i, i.compute_name.as_deref()?)))
+        .collect();
+    visible_inputs.sort_by(|a, b| a.0.canvas_y.total_cmp(&b.0.canvas_y));
+    let mut visible_outputs: Vec<(&crate::definition::OutputInfo, &str)> = d
+        .outputs
+        .iter()
+        .filter_map(|o| Some((o, o.compute_name.as_deref()?)))
+        .collect();
+    visible_outputs.sort_by(|a, b| a.0.canvas_y.total_cmp(&b.0.canvas_y));
+    let inputs: Vec<Json> = visible_inputs
+        .iter()
+        .map(|&(i, name)| {
             let at_most = if i.access == Access::Item {
                 1
             } else {
@@ -326,7 +351,7 @@ pub fn io(state: &State, body: &[u8]) -> Result<Json, ApiError> {
             };
             let at_least = i32::from(!(i.optional || i.default.is_some()));
             json!({
-                "Name": i.name,
+                "Name": name,
                 "Nickname": null,
                 "ParamType": param_type(i.data_type),
                 "Description": i.description,
@@ -334,7 +359,7 @@ pub fn io(state: &State, body: &[u8]) -> Result<Json, ApiError> {
                 "AtMost": at_most,
                 "TreeAccess": i.access == Access::Tree,
                 "Default": i.default.as_ref().map(|t| json!({
-                    "ParamName": i.name, "InnerTree": tree_json_compute(t)
+                    "ParamName": name, "InnerTree": tree_json_compute(t)
                 })),
                 // locus inputs have no slider limits.
                 "Minimum": null,
@@ -345,21 +370,20 @@ pub fn io(state: &State, body: &[u8]) -> Result<Json, ApiError> {
             })
         })
         .collect();
-    let outputs: Vec<Json> = d
-        .outputs
+    let outputs: Vec<Json> = visible_outputs
         .iter()
-        .map(|o| json!({"Name": o.name, "Nickname": null, "ParamType": param_type(o.data_type)}))
+        .map(|&(o, name)| json!({"Name": name, "Nickname": null, "ParamType": param_type(o.data_type)}))
         .collect();
     Ok(json!({
         "Description": d.description,
         "CacheKey": d.pointer,
-        "InputNames": d.inputs.iter().map(|i| i.name.as_str()).collect::<Vec<_>>(),
-        "OutputNames": d.outputs.iter().map(|o| o.name.as_str()).collect::<Vec<_>>(),
+        "InputNames": visible_inputs.iter().map(|(_, n)| *n).collect::<Vec<_>>(),
+        "OutputNames": visible_outputs.iter().map(|(_, n)| *n).collect::<Vec<_>>(),
         "Icon": null,
         "Inputs": inputs,
         "Outputs": outputs,
         "Warnings": d.warnings,
-        "Errors": [],
+        "Errors": d.errors,
     }))
 }
 

@@ -1,13 +1,21 @@
 //! The one place definitions are read: bytes in (from `algo` or a file under `--definitions`),
 //! a checked [`Definition`] out.
 //!
-//! RON graphs are read by the runtime. Grasshopper files (`.gh` binary archives and `.ghx` XML)
-//! are recognised here and will be read by the `locus-ghx` crate when it is part of the
-//! workspace; until then they are refused with a clear message. Everything else in the server
-//! sees only [`Definition`], so a new format plugs in here alone.
+//! RON graphs are read by the runtime; Grasshopper files (`.gh` binary archives and `.ghx` XML)
+//! are imported by `locus-ghx` onto a graph first. Everything else in the server sees only
+//! [`Definition`], so a new format plugs in here alone.
+//!
+//! A definition's inputs and outputs carry two names: the graph's own (what `/v1/run` uses) and
+//! Rhino.Compute's (what `/grasshopper` and `/io` use, `compute_name`). For a RON graph they are
+//! the same. For a Grasshopper file Compute's name is the whole nickname of the `RH_IN:`/
+//! `RH_OUT:` group (`RH_IN:radius`), or a Hops Get parameter's nickname
+//! ([`locus_ghx::ComputeName`]); graph inputs Compute would not see (a slider outside any
+//! `RH_IN` group) have none.
 
 use base64::Engine as _;
-use locus_runtime::{Access, DataTree, DataType, Document, NodeRegistry, Plan, Severity, Value};
+use locus_runtime::{
+    Access, DataTree, DataType, Document, Level, NodeRegistry, Plan, Severity, Value,
+};
 use md5::{Digest as _, Md5};
 
 /// The kinds of file a definition can come in.
@@ -43,8 +51,12 @@ impl Format {
 /// A named input of a definition, as `/io` describes it and solves read it.
 #[derive(Clone, Debug)]
 pub struct InputInfo {
-    /// The name callers use (`ParamName`).
+    /// The graph's name of the input (what `/v1/run` and the evaluator use).
     pub name: String,
+    /// The name Compute clients use (`ParamName`), if Compute would see the input.
+    pub compute_name: Option<String>,
+    /// The y position on the Grasshopper canvas (`/io` sorts by it); 0 for RON graphs.
+    pub canvas_y: f64,
     /// The type the input's port takes.
     pub data_type: DataType,
     /// How the port reads its data.
@@ -60,8 +72,12 @@ pub struct InputInfo {
 /// A named output of a definition.
 #[derive(Clone, Debug)]
 pub struct OutputInfo {
-    /// The name answers use (`ParamName`).
+    /// The graph's name of the output.
     pub name: String,
+    /// The name Compute answers use (`ParamName`), if Compute would see the output.
+    pub compute_name: Option<String>,
+    /// The y position on the Grasshopper canvas (`/io` sorts by it); 0 for RON graphs.
+    pub canvas_y: f64,
     /// The type of the port's items.
     pub data_type: DataType,
 }
@@ -81,14 +97,20 @@ pub struct Definition {
     pub inputs: Vec<InputInfo>,
     /// The named outputs, in the definition's order.
     pub outputs: Vec<OutputInfo>,
-    /// Problems checking found that do not stop it from running.
+    /// Problems that do not stop it from running: checking's warnings, and for Grasshopper
+    /// files the importer's warnings (a dropped modifier, a wire that does not cast, …).
     pub warnings: Vec<String>,
+    /// Errors that do not stop the rest from running, reported with every solve as Compute
+    /// does: objects of a Grasshopper file that cannot run (scripts, plugins, components
+    /// without a locus node) and Compute names used twice (the first one wins).
+    pub errors: Vec<String>,
 }
 
 /// Why bytes are not a definition this server can run.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum DefinitionError {
-    /// The format is recognised but not readable by this build.
+    /// The bytes do not read in the format they were recognised as (RON that is not UTF-8, a
+    /// Grasshopper archive that does not read).
     #[error("{0}")]
     Unsupported(String),
     /// The definition does not read or check: every error with its line and column.
@@ -120,37 +142,66 @@ fn trim_bom(bytes: &[u8]) -> &[u8] {
 /// Reads and checks a definition. `pointer` is the cache key it will be known by.
 ///
 /// # Errors
-/// [`DefinitionError::Unsupported`] for Grasshopper files (until `locus-ghx` is wired in) and
-/// text that is not UTF-8; [`DefinitionError::Invalid`] with every error found.
+/// [`DefinitionError::Unsupported`] for text that is not UTF-8 and Grasshopper files that do
+/// not read; [`DefinitionError::Invalid`] with every error found.
 pub fn load(
     bytes: &[u8],
     pointer: String,
     registry: &NodeRegistry,
 ) -> Result<Definition, DefinitionError> {
     let format = Format::sniff(bytes);
-    match format {
-        Format::Ron => {}
-        Format::Ghx | Format::Gh => {
-            return Err(DefinitionError::Unsupported(format!(
-                "Grasshopper {} files cannot be read by this build yet; send a locus graph (RON)",
-                if format == Format::Gh { ".gh" } else { ".ghx" }
-            )));
+    let (checked, description, names, mut warnings, errors) = match format {
+        Format::Ron => {
+            let text = std::str::from_utf8(trim_bom(bytes)).map_err(|e| {
+                DefinitionError::Unsupported(format!("the definition is not UTF-8: {e}"))
+            })?;
+            let doc = Document::parse(text).map_err(diagnostics)?;
+            let description = doc.graph().description.clone();
+            let checked = doc.check(registry).map_err(diagnostics)?;
+            (checked, description, None, Vec::new(), Vec::new())
         }
-    }
-    let text = std::str::from_utf8(trim_bom(bytes))
-        .map_err(|e| DefinitionError::Unsupported(format!("the definition is not UTF-8: {e}")))?;
-    let doc = Document::parse(text).map_err(diagnostics)?;
-    let description = doc.graph().description.clone();
-    let checked = doc.check(registry).map_err(diagnostics)?;
-    let warnings = checked.warnings.iter().map(ToString::to_string).collect();
+        Format::Ghx | Format::Gh => {
+            let limits = locus_ghx::Limits {
+                max_file_bytes: bytes.len().max(1),
+                ..locus_ghx::Limits::default()
+            };
+            let import = locus_ghx::import(bytes, registry, &limits).map_err(|e| {
+                DefinitionError::Unsupported(format!(
+                    "the Grasshopper {} file does not read: {e}",
+                    if format == Format::Gh { ".gh" } else { ".ghx" }
+                ))
+            })?;
+            let mut warnings = Vec::new();
+            let mut errors = Vec::new();
+            for d in &import.report.diagnostics {
+                match d.severity {
+                    Level::Error => errors.push(d.message.clone()),
+                    Level::Warning => warnings.push(d.message.clone()),
+                    Level::Remark => {}
+                }
+            }
+            let checked = locus_runtime::check(&import.graph, registry).map_err(diagnostics)?;
+            let names = (import.compute_inputs, import.compute_outputs);
+            (
+                checked,
+                import.graph.description.clone(),
+                Some(names),
+                warnings,
+                errors,
+            )
+        }
+    };
+    warnings.extend(checked.warnings.iter().map(ToString::to_string));
     let plan = checked.plan;
-    let inputs = plan
+    let mut inputs: Vec<InputInfo> = plan
         .inputs
         .iter()
         .map(|(name, node, port)| {
             let input = &plan.nodes[*node].inputs[*port];
             InputInfo {
                 name: name.clone(),
+                compute_name: names.is_none().then(|| name.clone()),
+                canvas_y: 0.0,
                 data_type: input.port.data_type,
                 access: input.port.access,
                 description: input.port.description.clone(),
@@ -162,14 +213,70 @@ pub fn load(
             }
         })
         .collect();
-    let outputs = plan
+    let mut outputs: Vec<OutputInfo> = plan
         .outputs
         .iter()
         .map(|(name, node, port)| OutputInfo {
             name: name.clone(),
+            compute_name: names.is_none().then(|| name.clone()),
+            canvas_y: 0.0,
             data_type: plan.nodes[*node].node_type.outputs[*port].data_type,
         })
         .collect();
+    let mut errors = errors;
+    let mut input_order = Vec::new();
+    let mut output_order = Vec::new();
+    if let Some((compute_inputs, compute_outputs)) = names {
+        input_order = compute_inputs.iter().map(|n| n.name.clone()).collect();
+        output_order = compute_outputs.iter().map(|n| n.name.clone()).collect();
+        let mut named = |list: Vec<locus_ghx::ComputeName>,
+                         set: &mut dyn FnMut(&str, &str, f64),
+                         what: &str| {
+            let mut seen = std::collections::HashSet::new();
+            for n in list {
+                if !seen.insert(n.name.clone()) {
+                    // Compute's own message for this; the first one wins.
+                    errors.push(format!(
+                        "Multiple {what} parameters with the same name were detected. \
+                         Parameter names must be unique. (\"{}\")",
+                        n.name
+                    ));
+                } else {
+                    set(&n.graph, &n.name, n.canvas_y);
+                }
+            }
+        };
+        named(
+            compute_inputs,
+            &mut |graph, name, y| {
+                if let Some(i) = inputs.iter_mut().find(|i| i.name == graph) {
+                    i.compute_name = Some(name.to_owned());
+                    i.canvas_y = y;
+                }
+            },
+            "input",
+        );
+        named(
+            compute_outputs,
+            &mut |graph, name, y| {
+                if let Some(o) = outputs.iter_mut().find(|o| o.name == graph) {
+                    o.compute_name = Some(name.to_owned());
+                    o.canvas_y = y;
+                }
+            },
+            "output",
+        );
+    }
+    if format != Format::Ron {
+        // Compute's order: the order of the objects that name them.
+        let rank = |name: &Option<String>, order: &[String]| {
+            name.as_ref()
+                .and_then(|n| order.iter().position(|o| o == n))
+                .unwrap_or(usize::MAX)
+        };
+        inputs.sort_by_key(|i| rank(&i.compute_name, &input_order));
+        outputs.sort_by_key(|o| rank(&o.compute_name, &output_order));
+    }
     Ok(Definition {
         pointer,
         format,
@@ -178,6 +285,7 @@ pub fn load(
         inputs,
         outputs,
         warnings,
+        errors,
     })
 }
 

@@ -7,11 +7,10 @@
 //! the Compute endpoints, an unknown input name is a 400 here.
 
 use base64::Engine as _;
-use locus_kernel::{
-    Arc, Circle, Interval, Line, LoopKind, NurbsSurface, OrientedBox, Plane, Point3, Transform,
-    Vector3,
+use locus_kernel::{Arc, Circle, Interval, Line, OrientedBox, Plane, Point3, Transform, Vector3};
+use locus_runtime::{
+    Branch, DataTree, DataType, Message, MessageJson, TreeJson, Value, ValueJson, cast_value,
 };
-use locus_runtime::{Branch, DataTree, DataType, Message, Value, cast_value};
 use serde::Deserialize;
 use serde_json::{Map, Value as Json, json};
 
@@ -311,161 +310,19 @@ pub fn decode_item(j: &Json, target: DataType) -> Result<Option<Value>, String> 
     })
 }
 
-fn xyz(x: f64, y: f64, z: f64) -> Json {
-    json!([number_json(x), number_json(y), number_json(z)])
-}
-
-fn number_json(x: f64) -> Json {
-    // JSON has no NaN or infinity: those become null (their nodes report them).
-    serde_json::Number::from_f64(if x == 0.0 { 0.0 } else { x }).map_or(Json::Null, Json::Number)
-}
-
-fn point_json(p: Point3) -> Json {
-    xyz(p.x, p.y, p.z)
-}
-
-fn plane_json(p: &Plane) -> Json {
-    json!({
-        "origin": xyz(p.origin.x, p.origin.y, p.origin.z),
-        "x": xyz(p.x_axis.x, p.x_axis.y, p.x_axis.z),
-        "y": xyz(p.y_axis.x, p.y_axis.y, p.y_axis.z),
-        "z": xyz(p.z_axis.x, p.z_axis.y, p.z_axis.z),
-    })
-}
-
-fn nums(xs: &[f64]) -> Vec<Json> {
-    xs.iter().map(|&x| number_json(x)).collect()
-}
-
-fn surface_json(s: &NurbsSurface) -> Json {
-    json!({
-        "degree": [s.degree_u(), s.degree_v()],
-        "count": [s.count_u(), s.count_v()],
-        "points": s.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
-        "weights": nums(s.weights()),
-        "knots_u": nums(s.knots_u()),
-        "knots_v": nums(s.knots_v()),
-    })
-}
-
-/// One item in locus's JSON form, the same as `locus run --format json` writes.
-pub fn value_json(value: &Value) -> Json {
-    match value {
-        Value::Number(x) => number_json(*x),
-        Value::Integer(i) => json!(i),
-        Value::Boolean(b) => json!(b),
-        Value::Text(s) => json!(s),
-        Value::Point(p) => json!({ "point": point_json(*p) }),
-        Value::Vector(v) => json!({ "vector": xyz(v.x, v.y, v.z) }),
-        Value::Plane(p) => json!({ "plane": plane_json(p) }),
-        Value::Domain(d) => json!({ "domain": [number_json(d.t0), number_json(d.t1)] }),
-        Value::Transform(t) => {
-            let rows: Vec<Json> = t.to_rows().iter().map(|r| Json::Array(nums(r))).collect();
-            json!({ "transform": rows })
-        }
-        Value::Box(b) => json!({ "box": {
-            "plane": plane_json(&b.plane),
-            "x": [number_json(b.x.t0), number_json(b.x.t1)],
-            "y": [number_json(b.y.t0), number_json(b.y.t1)],
-            "z": [number_json(b.z.t0), number_json(b.z.t1)],
-        }}),
-        Value::Line(l) => json!({ "line": [point_json(l.from), point_json(l.to)] }),
-        Value::Circle(c) => json!({ "circle": {
-            "plane": plane_json(&c.plane), "radius": number_json(c.radius),
-        }}),
-        Value::Arc(a) => json!({ "arc": {
-            "plane": plane_json(&a.circle.plane),
-            "radius": number_json(a.circle.radius),
-            "angle": [number_json(a.angle.t0), number_json(a.angle.t1)],
-        }}),
-        Value::Curve(c) => {
-            let n = c.to_nurbs();
-            let d = c.domain();
-            json!({ "curve": {
-                "degree": n.degree(),
-                "points": n.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
-                "weights": nums(n.weights()),
-                "knots": nums(n.knots()),
-                "periodic": n.is_periodic(),
-                "domain": [number_json(d.t0), number_json(d.t1)],
-            }})
-        }
-        Value::Surface(s) => json!({ "surface": surface_json(s) }),
-        Value::Brep(b) => json!({ "brep": {
-            "faces": b.faces().iter().map(|f| json!({
-                "surface": surface_json(&f.surface),
-                "reversed": f.reversed,
-                "loops": f.loops.iter().map(|&l| {
-                    let lp = &b.loops()[l];
-                    json!({
-                        "outer": lp.kind == LoopKind::Outer,
-                        "edges": lp.trims.iter().map(|&t| b.trims()[t].edge).collect::<Vec<_>>(),
-                    })
-                }).collect::<Vec<_>>(),
-            })).collect::<Vec<_>>(),
-            "edges": b.edges().iter().map(|e| {
-                let c = &e.curve;
-                json!({
-                    "degree": c.degree(),
-                    "points": c.points().iter().map(|p| point_json(*p)).collect::<Vec<_>>(),
-                    "weights": nums(c.weights()),
-                    "knots": nums(c.knots()),
-                    "vertices": e.vertices,
-                })
-            }).collect::<Vec<_>>(),
-            "vertices": b.vertices().iter().map(|v| point_json(v.point)).collect::<Vec<_>>(),
-        }}),
-        // As `locus run --format json` writes them (docs/json-output.md).
-        Value::Mesh(m) => {
-            let mut mesh = Map::new();
-            mesh.insert(
-                "vertices".into(),
-                m.vertices().iter().map(|p| point_json(*p)).collect(),
-            );
-            mesh.insert(
-                "faces".into(),
-                m.faces().iter().map(|f| json!(f.corners())).collect(),
-            );
-            if let Some(n) = m.normals() {
-                mesh.insert(
-                    "normals".into(),
-                    n.iter().map(|v| xyz(v.x, v.y, v.z)).collect(),
-                );
-            }
-            if let Some(c) = m.colors() {
-                mesh.insert(
-                    "colours".into(),
-                    c.iter().map(|c| json!([c.r, c.g, c.b, c.a])).collect(),
-                );
-            }
-            json!({ "mesh": Json::Object(mesh) })
-        }
-        Value::Colour(c) => json!({ "colour": [c.r, c.g, c.b, c.a] }),
-    }
-}
-
-/// A tree as `{"{0;1}": [item, …]}` in path order.
+/// A tree in locus's JSON form, as `locus run --format json` writes it.
 pub fn tree_json(tree: &DataTree) -> Json {
-    let mut map = Map::new();
-    for (path, branch) in tree.branches() {
-        let items: Vec<Json> = branch
-            .values()
-            .map(|v| v.as_ref().map_or(Json::Null, value_json))
-            .collect();
-        map.insert(path.to_string(), Json::Array(items));
-    }
-    Json::Object(map)
+    serde_json::to_value(TreeJson(tree)).unwrap_or(Json::Null)
 }
 
-/// A runtime message as JSON: node, level, path, index, text.
+/// A runtime message in locus's JSON form: node, level, path, index, text.
 pub fn message_json(m: &Message) -> Json {
-    json!({
-        "node": m.node.0,
-        "level": m.level.name(),
-        "path": m.path.as_ref().map(ToString::to_string),
-        "index": m.index,
-        "text": m.text,
-    })
+    serde_json::to_value(MessageJson(m)).unwrap_or(Json::Null)
+}
+
+/// One item in locus's JSON form.
+pub fn value_json(value: &Value) -> Json {
+    serde_json::to_value(ValueJson(value)).unwrap_or(Json::Null)
 }
 
 #[cfg(test)]

@@ -1,10 +1,24 @@
 //! The OpenAPI 3 description the server publishes at `/openapi.json` (for clients and fuzzers
 //! such as schemathesis).
 
+use base64::Engine as _;
 use serde_json::{Value as Json, json};
+
+/// A small graph the examples solve: `sum = x + 1`, so that a fuzzer that starts from the
+/// examples reaches the solver with any server, whatever definitions it serves.
+const EXAMPLE_GRAPH: &str = r#"(format: 1, nodes: [(id: "a", type: "maths.addition", values: {"B": 1})], inputs: {"x": "a.A"}, outputs: {"sum": "a.R"})"#;
 
 /// The OpenAPI document.
 pub fn document() -> Json {
+    let algo = base64::engine::general_purpose::STANDARD.encode(EXAMPLE_GRAPH);
+    let compute_example = json!({"algo": algo, "values": [
+        {"ParamName": "x", "InnerTree": {"{0}": [{"type": "System.Double", "data": "2.5"}]}}]});
+    let compute_body = json!({"required": true, "content": {"application/json": {
+        "schema": {"$ref": "#/components/schemas/ComputeRequest"},
+        "example": compute_example}}});
+    let run_body = json!({"required": true, "content": {"application/json": {
+        "schema": {"$ref": "#/components/schemas/RunRequest"},
+        "example": {"graph": EXAMPLE_GRAPH, "inputs": {"x": [1.5, {"point": [1, 2, 3]}]}}}}});
     let error = json!({"description": "an error", "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Error"}}}});
     let errors = json!({
         "400": error, "401": error, "404": error, "413": error, "500": error, "503": error, "504": error,
@@ -26,22 +40,22 @@ pub fn document() -> Json {
             "/version": {"get": {"responses": {"200": {"description": "versions", "content": {"application/json": {"schema": {"type": "object"}}}}}}},
             "/grasshopper": {"post": {
                 "summary": "solve a definition (Rhino.Compute schema)",
-                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ComputeRequest"}}}},
+                "requestBody": compute_body.clone(),
                 "responses": with_errors(json!({"description": "outputs", "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ComputeAnswer"}}}}))
             }},
             "/solve": {"post": {
                 "summary": "the same as /grasshopper",
-                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ComputeRequest"}}}},
+                "requestBody": compute_body.clone(),
                 "responses": with_errors(json!({"description": "outputs", "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ComputeAnswer"}}}}))
             }},
             "/io": {"post": {
                 "summary": "describe a definition's inputs and outputs",
-                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ComputeRequest"}}}},
+                "requestBody": compute_body.clone(),
                 "responses": with_errors(json!({"description": "inputs and outputs", "content": {"application/json": {"schema": {"type": "object"}}}}))
             }},
             "/v1/run": {"post": {
                 "summary": "run a graph with locus's JSON (docs/json-output.md)",
-                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/RunRequest"}}}},
+                "requestBody": run_body,
                 "responses": with_errors(json!({"description": "outputs and messages", "content": {"application/json": {"schema": {"type": "object"}}}}))
             }}
         },

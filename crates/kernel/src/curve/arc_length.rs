@@ -5,11 +5,14 @@
 //! Gauss–Legendre quadrature: each interval is integrated with 10 nodes and as two halves, and
 //! halved again until both estimates agree to the interval's share of the tolerance.
 //!
-//! The parameter at a length is found by Newton's method on `L(t) − s` (whose derivative is the
-//! speed `|C'(t)|`), safeguarded by bisection inside the span that contains the length.
+//! Parameters at lengths (and the divisions, which need many) go through the length table of
+//! `length_table.rs`: the accepted panels of that quadrature with their running sums, inverted
+//! by a search for the panel and Newton's method inside it, so that `n` divisions cost one
+//! quadrature of the curve and `O(n)` evaluations.
 
 use std::sync::OnceLock;
 
+use crate::curve::length_table::{Cursor, LengthTable};
 use crate::geometry::tolerance::LENGTH_TOLERANCE;
 use crate::{Error, NurbsCurve, Result, Vector3};
 
@@ -19,7 +22,7 @@ const NODES: usize = 10;
 /// The deepest bisection of one span in the adaptive quadrature: a panel 2⁻²⁴ of its span
 /// wide. Deeper bisection only chases rounding noise, and a cap on the depth is a cap on the
 /// work (at most 2²⁴ panels a span, reached only when the tolerance cannot be met).
-const MAX_DEPTH: u32 = 24;
+pub(crate) const MAX_DEPTH: u32 = 24;
 
 /// How many times the rounding noise of a length the absolute length tolerance is at least:
 /// the speed `|C'(t)|` of a curve whose control points coincide is not exactly zero but a few
@@ -61,7 +64,7 @@ pub(crate) fn division_count(total: f64, length: f64) -> Result<usize> {
 
 /// The 10-point Gauss–Legendre nodes on `[−1, 1]` and their weights, computed once by Newton's
 /// method on the Legendre polynomial `P₁₀`.
-fn gauss_legendre() -> &'static ([f64; NODES], [f64; NODES]) {
+pub(crate) fn gauss_legendre() -> &'static ([f64; NODES], [f64; NODES]) {
     static TABLE: OnceLock<([f64; NODES], [f64; NODES])> = OnceLock::new();
     TABLE.get_or_init(|| {
         let n = NODES;
@@ -147,7 +150,7 @@ impl NurbsCurve {
     /// share of the rough length, but never below the rounding noise of the control points'
     /// coordinates ([`NOISE_FLOOR_ULPS`] ulps of the largest), so that degenerate curves (all
     /// points equal, length zero) finish at once.
-    fn absolute_length_tolerance(&self, relative: f64) -> f64 {
+    pub(crate) fn absolute_length_tolerance(&self, relative: f64) -> f64 {
         let magnitude = self
             .points()
             .iter()
@@ -167,8 +170,13 @@ impl NurbsCurve {
     /// The length of the curve, with a quadrature error estimated below `tolerance` times the
     /// length.
     pub fn length_with_tolerance(&self, tolerance: f64) -> f64 {
-        let table = LengthTable::new(self, tolerance);
-        table.total()
+        let tol = self.absolute_length_tolerance(tolerance);
+        let breaks = self.span_breaks();
+        let domain = self.domain().length();
+        breaks
+            .windows(2)
+            .map(|w| self.span_length(w[0], w[1], tol * (w[1] - w[0]) / domain))
+            .sum()
     }
 
     /// The length of the part of the curve between the parameters `t0` and `t1` (in either
@@ -226,13 +234,15 @@ impl NurbsCurve {
         let d = self.domain();
         let last = if self.is_closed() { count - 1 } else { count };
         let mut out = Vec::with_capacity(last + 1);
+        let mut cursor = Cursor::default();
         for k in 0..=last {
             let t = if k == 0 {
                 d.t0
             } else if k == count {
                 d.t1
             } else {
-                table.parameter_at(self, total * k as f64 / count as f64)?
+                let s = total * k as f64 / count as f64;
+                table.parameter_from(self, s, &mut cursor, true)?
             };
             out.push(t);
         }
@@ -258,6 +268,7 @@ impl NurbsCurve {
         let count = division_count(total + slack, length)?;
         let closed = self.is_closed();
         let mut out = Vec::with_capacity(count + 1);
+        let mut cursor = Cursor::default();
         for k in 0..=count {
             let s = k as f64 * length;
             if k > 0 && (s - total).abs() <= slack {
@@ -266,7 +277,7 @@ impl NurbsCurve {
                 }
                 break;
             }
-            out.push(table.parameter_at(self, s.min(total))?);
+            out.push(table.parameter_from(self, s.min(total), &mut cursor, true)?);
         }
         Ok(out)
     }
@@ -285,99 +296,6 @@ impl NurbsCurve {
             )));
         }
         Ok(())
-    }
-}
-
-/// The lengths of the spans of a curve, and their running sums.
-struct LengthTable {
-    /// The span ends `t_0 < t_1 < … < t_m`.
-    breaks: Vec<f64>,
-    /// `cumulative[i]` is the length from the start to `breaks[i]`.
-    cumulative: Vec<f64>,
-    /// The absolute tolerance used for lengths.
-    tolerance: f64,
-}
-
-impl LengthTable {
-    fn new(curve: &NurbsCurve, relative: f64) -> Self {
-        let breaks = curve.span_breaks();
-        let tolerance = curve.absolute_length_tolerance(relative);
-        let domain = curve.domain().length();
-        let mut cumulative = Vec::with_capacity(breaks.len());
-        cumulative.push(0.0);
-        let mut sum = 0.0;
-        for w in breaks.windows(2) {
-            let share = tolerance * (w[1] - w[0]) / domain;
-            sum += curve.span_length(w[0], w[1], share);
-            cumulative.push(sum);
-        }
-        Self {
-            breaks,
-            cumulative,
-            tolerance,
-        }
-    }
-
-    fn total(&self) -> f64 {
-        self.cumulative[self.cumulative.len() - 1]
-    }
-
-    /// The parameter at arc length `s` from the start.
-    fn parameter_at(&self, curve: &NurbsCurve, s: f64) -> Result<f64> {
-        if !s.is_finite() {
-            return Err(Error::NotFinite { what: "length" });
-        }
-        let total = self.total();
-        let slack = 1e-12 * total.max(f64::MIN_POSITIVE) + self.tolerance;
-        if s < -slack || s > total + slack {
-            return Err(Error::InvalidInput(format!(
-                "length {s} is outside the curve's length 0 to {total}"
-            )));
-        }
-        let s = s.clamp(0.0, total);
-        if s == 0.0 {
-            return Ok(self.breaks[0]);
-        }
-        if s == total {
-            return Ok(self.breaks[self.breaks.len() - 1]);
-        }
-        // The span whose cumulative range contains s.
-        let i = self
-            .cumulative
-            .partition_point(|&c| c <= s)
-            .saturating_sub(1)
-            .min(self.breaks.len() - 2);
-        let (a, b) = (self.breaks[i], self.breaks[i + 1]);
-        let target = s - self.cumulative[i];
-        let span_len = self.cumulative[i + 1] - self.cumulative[i];
-        if span_len <= 0.0 {
-            return Ok(a);
-        }
-        let local_tol = self.tolerance * 1e-2;
-        let (mut lo, mut hi) = (a, b);
-        let mut t = a + (b - a) * (target / span_len);
-        for _ in 0..100 {
-            let f = curve.span_length(a, t, local_tol) - target;
-            if f.abs() <= local_tol {
-                return Ok(t);
-            }
-            if f > 0.0 {
-                hi = t;
-            } else {
-                lo = t;
-            }
-            let speed = curve.speed_at(t);
-            let newton = t - f / speed;
-            t = if speed > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            if hi - lo <= 4.0 * f64::EPSILON * (a.abs().max(b.abs()).max(1.0)) {
-                return Ok(t);
-            }
-        }
-        Ok(t)
     }
 }
 

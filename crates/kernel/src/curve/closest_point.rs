@@ -10,8 +10,19 @@
 //! is kept as a fallback candidate. The answer is the candidate with the smallest distance; on a
 //! tie the smallest parameter wins, so at the seam of a closed curve the domain's start is
 //! reported.
+//!
+//! Most spans cannot hold the answer, and are skipped without being sampled: by the convex hull
+//! property (weights are positive), every point of a span lies in the axis-aligned box of the
+//! span's `degree + 1` control points, so the distance to that box is a lower bound of the
+//! span's distances. The span with the nearest box is searched first, and a span whose bound
+//! exceeds the best distance found so far cannot improve on it (nor tie with it), so it is left
+//! out; spans that pass are checked again against the box of their Bézier control points,
+//! which is much tighter. The
+//! answer is the same as that of the search of every span,
+//! [`NurbsCurve::closest_point_exhaustive`], which the tests compare it with.
 
-use crate::{Error, NurbsCurve, Point3, Result, Vector3};
+use crate::curve::bezier_piece::BezierPiece;
+use crate::{Error, NurbsCurve, Point3, Result};
 
 /// The closest point of a curve to a test point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,6 +34,12 @@ pub struct CurveClosestPoint {
     /// The distance from the test point to the closest point.
     pub distance: f64,
 }
+
+/// How far (relative, in squared distance) a span's bound must exceed the best squared
+/// distance for the span to be skipped: 1e-9, far above the rounding of both, so that a span
+/// holding a candidate as close as the best (up to rounding) is still searched and ties are
+/// broken as in the search of every span.
+const PRUNE_MARGIN: f64 = 1e-9;
 
 /// The number of samples per span of a non-rational curve of degree `p`.
 fn samples_per_span(degree: usize, rational: bool) -> usize {
@@ -45,50 +62,136 @@ impl NurbsCurve {
     }
 
     /// The closest point to `p` with the parameter restricted to `[lo, hi]` (`lo ≤ hi`, inside
-    /// the domain).
+    /// the domain), pruning the spans by the boxes of their control points.
     pub(crate) fn closest_point_between(&self, p: Point3, lo: f64, hi: f64) -> CurveClosestPoint {
-        let mut best = self.candidate(p, lo);
-        let end = self.candidate(p, hi);
-        if end.distance < best.distance {
-            best = end;
+        let mut best = self.ends(p, lo, hi);
+        let spans: Vec<(f64, usize)> = self
+            .span_indices()
+            .filter(|&span| self.knots()[span + 1] > lo && self.knots()[span] < hi)
+            .map(|span| (self.span_box_distance_squared(span, p), span))
+            .collect();
+        let beyond = |bound: f64, best: &CurveClosestPoint| {
+            bound > best.distance * best.distance * (1.0 + PRUNE_MARGIN)
+        };
+        // The span of the nearest box first, which usually holds the answer, then the others
+        // in order, each unless its box (of the B-spline control points, then of the tighter
+        // Bézier control points) is beyond the best distance so far.
+        let nearest = spans
+            .iter()
+            .enumerate()
+            .min_by(|x, y| x.1.0.total_cmp(&y.1.0))
+            .map(|(k, _)| k);
+        if let Some(k) = nearest {
+            self.search_piece(&self.bezier_piece(spans[k].1), p, lo, hi, &mut best);
         }
-        let samples = samples_per_span(self.degree(), self.is_rational());
-        let spans: Vec<usize> = self.span_indices().collect();
-        for span in spans {
-            let a = self.knots()[span].max(lo);
-            let b = self.knots()[span + 1].min(hi);
-            if b <= a {
+        for (k, &(bound, span)) in spans.iter().enumerate() {
+            if Some(k) == nearest || beyond(bound, &best) {
                 continue;
             }
-            let mut prev_t = a;
-            let mut prev_g = self.distance_gradient(span, p, a).0;
-            let mut best_sample = self.candidate(p, a);
-            for k in 1..=samples {
-                let t = if k == samples {
-                    b
-                } else {
-                    a + (b - a) * (k as f64 / samples as f64)
-                };
-                let (g, _) = self.distance_gradient(span, p, t);
-                let c = self.candidate(p, t);
-                if c.distance < best_sample.distance {
-                    best_sample = c;
-                }
-                if prev_g < 0.0 && g >= 0.0 {
-                    let root = self.polish(span, p, prev_t, t);
-                    let c = self.candidate(p, root);
-                    if c.distance < best.distance || (c.distance == best.distance && c.t < best.t) {
-                        best = c;
-                    }
-                }
-                prev_t = t;
-                prev_g = g;
-            }
-            if best_sample.distance < best.distance {
-                best = best_sample;
+            let piece = self.bezier_piece(span);
+            if !beyond(piece.box_distance_squared(p), &best) {
+                self.search_piece(&piece, p, lo, hi, &mut best);
             }
         }
-        best
+        self.finish(p, best)
+    }
+
+    /// The closest point to `p` over the whole domain by the search of every span, without the
+    /// pruning of [`NurbsCurve::closest_point`] (the reference it is tested and benchmarked
+    /// against; the answers are equal).
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] when `p` is not finite.
+    #[doc(hidden)]
+    pub fn closest_point_exhaustive(&self, p: Point3) -> Result<CurveClosestPoint> {
+        if !p.is_finite() {
+            return Err(Error::NotFinite { what: "point" });
+        }
+        let d = self.domain();
+        let mut best = self.ends(p, d.t0, d.t1);
+        let spans: Vec<usize> = self.span_indices().collect();
+        for span in spans {
+            self.search_piece(&self.bezier_piece(span), p, d.t0, d.t1, &mut best);
+        }
+        Ok(self.finish(p, best))
+    }
+
+    /// The better of the two ends `lo` and `hi` (the start on a tie).
+    fn ends(&self, p: Point3, lo: f64, hi: f64) -> CurveClosestPoint {
+        let start = self.candidate(p, lo);
+        let end = self.candidate(p, hi);
+        if end.distance < start.distance {
+            end
+        } else {
+            start
+        }
+    }
+
+    /// The answer with its point evaluated by [`NurbsCurve::point_at`] (the search measures
+    /// distances with the points of the span derivatives, which may differ in the last bit).
+    fn finish(&self, p: Point3, best: CurveClosestPoint) -> CurveClosestPoint {
+        let point = self.point_at(best.t);
+        CurveClosestPoint {
+            t: best.t,
+            point,
+            distance: point.distance(p),
+        }
+    }
+
+    /// The squared distance from `p` to the axis-aligned box of the control points of `span`.
+    fn span_box_distance_squared(&self, span: usize, p: Point3) -> f64 {
+        let first = span + 1 - self.degree();
+        let cvs = &self.points()[first..=first + self.degree()];
+        let (mut lo, mut hi) = (cvs[0], cvs[0]);
+        for q in &cvs[1..] {
+            lo = Point3::new(lo.x.min(q.x), lo.y.min(q.y), lo.z.min(q.z));
+            hi = Point3::new(hi.x.max(q.x), hi.y.max(q.y), hi.z.max(q.z));
+        }
+        let dx = (lo.x - p.x).max(p.x - hi.x).max(0.0);
+        let dy = (lo.y - p.y).max(p.y - hi.y).max(0.0);
+        let dz = (lo.z - p.z).max(p.z - hi.z).max(0.0);
+        dx * dx + dy * dy + dz * dz
+    }
+
+    /// Samples `piece` (restricted to `[lo, hi]`), polishes every bracket of a minimum and
+    /// offers the roots and the best sample to `best` (smaller distance, or equal distance and
+    /// smaller parameter, wins). The piece is evaluated in its Bézier form, so that at the
+    /// span's end the derivatives are those from the left.
+    fn search_piece(
+        &self,
+        piece: &BezierPiece,
+        p: Point3,
+        lo: f64,
+        hi: f64,
+        best: &mut CurveClosestPoint,
+    ) {
+        let a = piece.a.max(lo);
+        let b = piece.b.min(hi);
+        if b <= a {
+            return;
+        }
+        let samples = samples_per_span(self.degree(), self.is_rational());
+        let (mut prev_g, start) = sample(piece, p, a);
+        let mut prev_t = a;
+        let mut best_sample = start;
+        for k in 1..=samples {
+            let t = if k == samples {
+                b
+            } else {
+                a + (b - a) * (k as f64 / samples as f64)
+            };
+            let (g, c) = sample(piece, p, t);
+            if c.distance < best_sample.distance {
+                best_sample = c;
+            }
+            if prev_g < 0.0 && g >= 0.0 {
+                let root = polish(piece, p, prev_t, t);
+                offer(best, self.candidate(p, root));
+            }
+            prev_t = t;
+            prev_g = g;
+        }
+        offer(best, best_sample);
     }
 
     fn candidate(&self, p: Point3, t: f64) -> CurveClosestPoint {
@@ -99,46 +202,64 @@ impl NurbsCurve {
             distance: point.distance(p),
         }
     }
+}
 
-    /// `g(t) = C'·(C − P)` and its derivative `C''·(C − P) + |C'|²`, on the polynomial piece of
-    /// span `span` (so that at the span's end the derivatives are those from the left).
-    fn distance_gradient(&self, span: usize, p: Point3, t: f64) -> (f64, f64) {
-        let mut d = [Vector3::ZERO; 3];
-        self.derivatives_in_span(span, t, &mut d);
-        let r = Point3::from_vector(d[0]) - p;
-        (d[1].dot(r), d[2].dot(r) + d[1].length_squared())
-    }
+/// `g(t) = C′·(C − P)` on `piece` and the candidate at `t`.
+fn sample(piece: &BezierPiece, p: Point3, t: f64) -> (f64, CurveClosestPoint) {
+    let [d0, d1, _] = piece.derivatives(t);
+    let point = Point3::from_vector(d0);
+    let r = point - p;
+    (
+        d1.dot(r),
+        CurveClosestPoint {
+            t,
+            point,
+            distance: r.length(),
+        },
+    )
+}
 
-    /// A root of `g` in `[a, b]` with `g(a) < 0 ≤ g(b)`: Newton's method, falling back to
-    /// bisection whenever a step would leave the bracket.
-    fn polish(&self, span: usize, p: Point3, a: f64, b: f64) -> f64 {
-        let (mut lo, mut hi) = (a, b);
-        let mut t = 0.5 * (a + b);
-        let scale = a.abs().max(b.abs()).max(1.0);
-        for _ in 0..100 {
-            let (g, dg) = self.distance_gradient(span, p, t);
-            if g == 0.0 {
-                return t;
-            }
-            if g < 0.0 {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let newton = t - g / dg;
-            let next = if dg > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            if (next - t).abs() <= 2.0 * f64::EPSILON * scale
-                || hi - lo <= 2.0 * f64::EPSILON * scale
-            {
-                return next;
-            }
-            t = next;
+/// `g(t) = C′·(C − P)` and its derivative `C″·(C − P) + |C′|²` on `piece`.
+fn distance_gradient(piece: &BezierPiece, p: Point3, t: f64) -> (f64, f64) {
+    let [d0, d1, d2] = piece.derivatives(t);
+    let r = Point3::from_vector(d0) - p;
+    (d1.dot(r), d2.dot(r) + d1.length_squared())
+}
+
+/// A root of `g` in `[a, b]` with `g(a) < 0 ≤ g(b)`: Newton's method, falling back to
+/// bisection whenever a step would leave the bracket.
+fn polish(piece: &BezierPiece, p: Point3, a: f64, b: f64) -> f64 {
+    let (mut lo, mut hi) = (a, b);
+    let mut t = 0.5 * (a + b);
+    let scale = a.abs().max(b.abs()).max(1.0);
+    for _ in 0..100 {
+        let (g, dg) = distance_gradient(piece, p, t);
+        if g == 0.0 {
+            return t;
         }
-        t
+        if g < 0.0 {
+            lo = t;
+        } else {
+            hi = t;
+        }
+        let newton = t - g / dg;
+        let next = if dg > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - t).abs() <= 2.0 * f64::EPSILON * scale || hi - lo <= 2.0 * f64::EPSILON * scale {
+            return next;
+        }
+        t = next;
+    }
+    t
+}
+
+/// Replaces `best` by `c` if `c` is closer, or as close with a smaller parameter.
+fn offer(best: &mut CurveClosestPoint, c: CurveClosestPoint) {
+    if c.distance < best.distance || (c.distance == best.distance && c.t < best.t) {
+        *best = c;
     }
 }
 

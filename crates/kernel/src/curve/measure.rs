@@ -86,13 +86,18 @@ impl Curve {
         let total = self.length();
         let d = self.domain();
         let last = if self.is_closed() { count - 1 } else { count };
-        (0..=last)
+        let mut walk = LengthWalk::default();
+        Ok((0..=last)
             .map(|k| match k {
-                0 => Ok(d.t0),
-                k if k == count => Ok(d.t1),
-                k => self.parameter_at_length(total * k as f64 / count as f64),
+                0 => d.t0,
+                k if k == count => d.t1,
+                k => self.parameter_at_increasing_length(
+                    total * k as f64 / count as f64,
+                    total,
+                    &mut walk,
+                ),
             })
-            .collect()
+            .collect())
     }
 
     /// The parameters at arc lengths `0, length, 2·length, …` from the start (Grasshopper's
@@ -114,6 +119,7 @@ impl Curve {
         let slack = 1e-9 * total;
         let count = crate::curve::arc_length::division_count(total + slack, length)?;
         let mut out = Vec::with_capacity(count + 1);
+        let mut walk = LengthWalk::default();
         for k in 0..=count {
             let s = k as f64 * length;
             if k > 0 && (s - total).abs() <= slack {
@@ -122,7 +128,7 @@ impl Curve {
                 }
                 break;
             }
-            out.push(self.parameter_at_length(s.min(total))?);
+            out.push(self.parameter_at_increasing_length(s.min(total), total, &mut walk));
         }
         Ok(out)
     }
@@ -169,6 +175,40 @@ impl Curve {
         Ok(())
     }
 
+    /// As [`Curve::parameter_at_length`] for `length` in `[0, total]` (`total` the length) on a
+    /// non-NURBS curve, for lengths given in increasing order: a polyline's segments are walked
+    /// once for all of them (`walk` keeps the place), instead of from the start for each.
+    fn parameter_at_increasing_length(
+        &self,
+        length: f64,
+        total: f64,
+        walk: &mut LengthWalk,
+    ) -> f64 {
+        let map = self.parameter_map().expect("not a nurbs curve");
+        let l = length.clamp(0.0, total);
+        if l == total {
+            return map.domain.t1;
+        }
+        let natural = match self {
+            Self::Polyline { polyline, .. } => {
+                let count = polyline.segment_count();
+                loop {
+                    if walk.segment >= count {
+                        break polyline.domain().t1;
+                    }
+                    let len = polyline.segment(walk.segment).length();
+                    if len > 0.0 && walk.walked + len > l {
+                        break walk.segment as f64 + (l - walk.walked) / len;
+                    }
+                    walk.walked += len;
+                    walk.segment += 1;
+                }
+            }
+            _ => self.natural_at_length(l),
+        };
+        map.to_curve(natural)
+    }
+
     /// The arc length from the start of the natural parameter interval to natural parameter
     /// `s` (non-NURBS variants).
     fn natural_length_to(&self, s: f64) -> f64 {
@@ -208,6 +248,14 @@ impl Curve {
             Self::Nurbs(_) => unreachable!("nurbs curves are measured by quadrature"),
         }
     }
+}
+
+/// The place of a walk along a polyline's segments: the segment reached and the length before
+/// it.
+#[derive(Default)]
+struct LengthWalk {
+    segment: usize,
+    walked: f64,
 }
 
 #[cfg(test)]
@@ -263,6 +311,17 @@ mod tests {
         assert_eq!(ts[3], 2.0);
         assert_eq!(p.divide_by_length(2.0).unwrap().len(), 4);
         assert_eq!(p.divide_by_length(3.5).unwrap(), vec![0.0, 2.125, 3.0]);
+        // The walk along the segments gives what one search per length gives.
+        for count in [1, 3, 7, 50] {
+            let total = p.length();
+            let walked = p.divide_by_count(count).unwrap();
+            for (k, &t) in walked.iter().enumerate().skip(1).take(count - 1) {
+                let alone = p
+                    .parameter_at_length(total * k as f64 / count as f64)
+                    .unwrap();
+                assert_eq!(t, alone, "count {count}, point {k}");
+            }
+        }
     }
 
     #[test]

@@ -12,11 +12,13 @@
 pub(crate) mod arc;
 pub(crate) mod arc_length;
 pub(crate) mod bezier;
+pub(crate) mod bezier_piece;
 pub(crate) mod circle;
 pub(crate) mod closest_point;
 pub(crate) mod continuity;
 pub(crate) mod hermite;
 pub(crate) mod kinks;
+pub(crate) mod length_table;
 pub(crate) mod line;
 pub(crate) mod measure;
 pub(crate) mod nurbs;

@@ -18,6 +18,7 @@
 //!
 //! The smallest distance wins.
 
+use crate::curve::bezier_piece::blossoms;
 use crate::curve::nurbs::basis::{MAX_ORDER, basis_functions, span_index};
 use crate::surface::check_parameters;
 use crate::surface::direction::SurfaceDirection;
@@ -41,6 +42,13 @@ pub struct SurfaceClosestPoint {
 const MAX_ITERATIONS: usize = 64;
 /// At most this many halvings of a step in the line search.
 const MAX_HALVINGS: usize = 40;
+/// How many ulps of the largest coordinate (of the surface point and the test point) the
+/// evaluation of a point may be off by: 16. A squared distance that rises by no more than the
+/// rounding this causes is not a rise, so the line search accepts a step that changes `f` only
+/// at rounding level and Newton's method goes on to the root of the gradient, to rounding level
+/// in the parameters, instead of stopping where `f` no longer decreases measurably (about 1e-8
+/// of the patch short of it, since `f` is flat to second order there).
+const NOISE_ULPS: f64 = 16.0;
 /// At most this many discrete local minima of a patch's sample grid are polished.
 const STARTS_PER_PATCH: usize = 3;
 
@@ -124,6 +132,13 @@ impl NurbsSurface {
                 break;
             }
             let (a, b) = (index / nv, index % nv);
+            // The tighter bound of the patch's Bézier control points, once the box of its
+            // B-spline control points has let it through.
+            let su = span_index(self.degree_u(), self.knots_u(), breaks_u[a]);
+            let sv = span_index(self.degree_v(), self.knots_v(), breaks_v[b]);
+            if self.bezier_patch_box_distance_squared(su, sv, test) > best.distance_squared {
+                continue;
+            }
             let rect = Rect {
                 u: [breaks_u[a], breaks_u[a + 1]],
                 v: [breaks_v[b], breaks_v[b + 1]],
@@ -238,6 +253,55 @@ impl NurbsSurface {
             point: best.point,
             distance: best.distance_squared.sqrt(),
         })
+    }
+
+    /// The squared distance from `test` to the axis-aligned box of the Bézier control points of
+    /// the patch of spans `su` × `sv` (its rows converted to Bézier form in `v`, then its
+    /// columns in `u`, homogeneously; the patch lies in their convex hull for positive
+    /// weights). Degrees above 3 get the bound 0 (no pruning beyond the B-spline box).
+    fn bezier_patch_box_distance_squared(&self, su: usize, sv: usize, test: Point3) -> f64 {
+        const N: usize = 4;
+        let (p, q) = (self.degree_u(), self.degree_v());
+        if p >= N || q >= N {
+            return 0.0;
+        }
+        let (first_u, first_v) = (su + 1 - p, sv + 1 - q);
+        let knots_u = &self.knots_u()[first_u..first_u + 2 * p];
+        let knots_v = &self.knots_v()[first_v..first_v + 2 * q];
+        let range_u = [self.knots_u()[su], self.knots_u()[su + 1]];
+        let range_v = [self.knots_v()[sv], self.knots_v()[sv + 1]];
+        let mut rows = [[[0.0; 4]; N]; N];
+        for (i, row) in rows[..=p].iter_mut().enumerate() {
+            let mut homogeneous = [[0.0; 4]; N];
+            for (j, h) in homogeneous[..=q].iter_mut().enumerate() {
+                let k = (first_u + i) * self.count_v() + first_v + j;
+                let (pt, w) = (self.points[k], self.weights[k]);
+                *h = [pt.x * w, pt.y * w, pt.z * w, w];
+            }
+            blossoms::<N>(q, knots_v, range_v, &homogeneous[..=q], &mut row[..=q]);
+        }
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        // Column j of the rows, gathered across them: an index loop reads more plainly here.
+        #[allow(clippy::needless_range_loop)]
+        for j in 0..=q {
+            let column: [[f64; 4]; N] = std::array::from_fn(|i| rows[i][j]);
+            let mut bezier = [[0.0; 4]; N];
+            blossoms::<N>(p, knots_u, range_u, &column[..=p], &mut bezier[..=p]);
+            for h in &bezier[..=p] {
+                for c in 0..3 {
+                    let v = h[c] / h[3];
+                    lo[c] = lo[c].min(v);
+                    hi[c] = hi[c].max(v);
+                }
+            }
+        }
+        let mut sum = 0.0;
+        for (c, x) in test.to_array().into_iter().enumerate() {
+            let d = (lo[c] - x).max(x - hi[c]).max(0.0);
+            sum += d * d;
+        }
+        sum
     }
 
     /// Samples one patch and polishes its best discrete local minima.
@@ -360,7 +424,7 @@ impl NurbsSurface {
                 let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
                 let p = self.point_at(nu, nv);
                 let nf = p.distance_squared(test);
-                if nf <= f {
+                if nf <= f + rounding_noise(p, test, f) {
                     accepted = Some((nu, nv, nf));
                     break;
                 }
@@ -457,7 +521,8 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nt = (t + alpha * s).clamp(range[0], range[1]);
                 let (u, v) = uv(nt);
-                if self.point_at(u, v).distance_squared(test) <= f {
+                let p = self.point_at(u, v);
+                if p.distance_squared(test) <= f + rounding_noise(p, test, f) {
                     accepted = Some(nt);
                     break;
                 }
@@ -477,6 +542,18 @@ impl NurbsSurface {
         let (u, v) = uv(t);
         best.offer(u, v, d.point, d.point.distance_squared(test));
     }
+}
+
+/// The rounding level of the squared distance `f` between `point` (an evaluated surface
+/// point) and `test`: `2·√f·e + e²` with `e` [`NOISE_ULPS`] ulps of the largest coordinate.
+fn rounding_noise(point: Point3, test: Point3, f: f64) -> f64 {
+    let magnitude = point
+        .to_array()
+        .into_iter()
+        .chain(test.to_array())
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    let e = NOISE_ULPS * f64::EPSILON * magnitude;
+    2.0 * f.sqrt() * e + e * e
 }
 
 /// The most samples per span and direction.
@@ -589,6 +666,78 @@ mod tests {
                     "{p:?}: {} vs {sampled}",
                     cp.distance
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn the_polish_ends_at_rounding_level() {
+        // Test points on the normals of interior points: the foot is the closest point, and
+        // the answer must be it to rounding level in the parameters.
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for (u, v, h) in [(0.3, -0.2, 0.4), (1.1, 1.7, -0.3), (1.7, 2.5, 0.05)] {
+                let foot = s.point_at(u, v);
+                let normal = s.normal_at(u, v).unwrap();
+                let cp = s.closest_point(foot + normal * h).unwrap();
+                assert!(
+                    (cp.u - u).abs() <= 1e-13 && (cp.v - v).abs() <= 1e-13,
+                    "({u}, {v}) found as ({}, {})",
+                    cp.u,
+                    cp.v
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn random_queries_are_never_farther_than_a_dense_sample() {
+        // A fixed linear congruential sequence of queries around the wavy surfaces.
+        let mut state = 29u64;
+        let mut r = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for rational in [false, true] {
+            let s = wavy(rational);
+            for _ in 0..150 {
+                let p = Point3::new(-2.0 + 10.0 * r(), -2.0 + 8.0 * r(), -3.0 + 6.0 * r());
+                let cp = s.closest_point(p).unwrap();
+                let sampled = brute_force(&s, p, 120);
+                assert!(
+                    cp.distance <= sampled + 1e-12,
+                    "{p:?}: {} vs {sampled}",
+                    cp.distance
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn bezier_patch_boxes_hold_their_patches() {
+        for rational in [false, true] {
+            let s = wavy(rational);
+            let (bu, bv) = (
+                s.span_breaks(SurfaceDirection::U),
+                s.span_breaks(SurfaceDirection::V),
+            );
+            for a in bu.windows(2) {
+                for b in bv.windows(2) {
+                    let su = span_index(s.degree_u(), s.knots_u(), a[0]);
+                    let sv = span_index(s.degree_v(), s.knots_v(), b[0]);
+                    for i in 0..=6 {
+                        for j in 0..=6 {
+                            let u = a[0] + (a[1] - a[0]) * i as f64 / 6.0;
+                            let v = b[0] + (b[1] - b[0]) * j as f64 / 6.0;
+                            let d = s.bezier_patch_box_distance_squared(su, sv, s.point_at(u, v));
+                            assert!(d <= 1e-26, "({u}, {v}): {d}");
+                        }
+                    }
+                    let above = s.point_at(a[0], b[0]) + Vector3::new(0.0, 0.0, 40.0);
+                    assert!(s.bezier_patch_box_distance_squared(su, sv, above) > 1.0);
+                }
             }
         }
     }

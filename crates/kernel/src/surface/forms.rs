@@ -7,6 +7,7 @@
 //! parameter is therefore not the angle, but `u = 0, π/2, π, 3π/2` do land on the axes.
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::sync::OnceLock;
 
 use crate::{Error, Interval, NurbsSurface, Plane, Point3, Result};
 
@@ -102,6 +103,38 @@ impl NurbsSurface {
     }
 }
 
+/// The weights and knots of Rhino's sphere (see [`Sphere::to_nurbs`]), computed once.
+fn sphere_pattern() -> &'static ([f64; 45], [f64; 10], [f64; 6]) {
+    static PATTERN: OnceLock<([f64; 45], [f64; 10], [f64; 6])> = OnceLock::new();
+    PATTERN.get_or_init(|| {
+        let s = corner_weight();
+        let mut weights = [0.0; 45];
+        for (i, &(_, _, corner_u)) in CIRCLE.iter().enumerate() {
+            for (j, &(_, _, corner_v)) in MERIDIAN.iter().enumerate() {
+                weights[i * 5 + j] = match (corner_u, corner_v) {
+                    (true, true) => 0.5,
+                    (false, false) => 1.0,
+                    _ => s,
+                };
+            }
+        }
+        let mut knots_u = [0.0; 10];
+        knots_u.copy_from_slice(&circle_knots());
+        let knots_v = [-FRAC_PI_2, -FRAC_PI_2, 0.0, 0.0, FRAC_PI_2, FRAC_PI_2];
+        (weights, knots_u, knots_v)
+    })
+}
+
+/// The meridian of Rhino's sphere: `(ρ, z)` on the unit half circle from the south to the north
+/// pole and the corner flag (weight `1/√2`).
+const MERIDIAN: [(f64, f64, bool); 5] = [
+    (0.0, -1.0, false),
+    (1.0, -1.0, true),
+    (1.0, 0.0, false),
+    (1.0, 1.0, true),
+    (0.0, 1.0, false),
+];
+
 /// A sphere: the points at distance `radius` from the origin of `plane`. The plane orients the
 /// NURBS form: longitude `u` starts on its x axis and turns about its z axis, latitude `v` runs
 /// from the south pole (`−z`) to the north pole.
@@ -164,14 +197,6 @@ impl Sphere {
     /// # Errors
     /// [`Error::NotFinite`] if the control points overflow (a radius near `f64::MAX`).
     pub fn to_nurbs(&self) -> Result<NurbsSurface> {
-        const MERIDIAN: [(f64, f64, bool); 5] = [
-            (0.0, -1.0, false),
-            (1.0, -1.0, true),
-            (1.0, 0.0, false),
-            (1.0, 1.0, true),
-            (0.0, 1.0, false),
-        ];
-        let s = corner_weight();
         let Plane {
             origin,
             x_axis,
@@ -180,21 +205,33 @@ impl Sphere {
         } = self.plane;
         let r = self.radius;
         let mut points = Vec::with_capacity(45);
-        let mut weights = Vec::with_capacity(45);
-        for &(cx, cy, corner_u) in &CIRCLE {
-            for &(rho, z, corner_v) in &MERIDIAN {
+        for &(cx, cy, _) in &CIRCLE {
+            for &(rho, z, _) in &MERIDIAN {
                 points.push(
                     origin + x_axis * (r * rho * cx) + y_axis * (r * rho * cy) + z_axis * (r * z),
                 );
-                weights.push(match (corner_u, corner_v) {
-                    (true, true) => 0.5,
-                    (false, false) => 1.0,
-                    _ => s,
-                });
             }
         }
-        let knots_v = vec![-FRAC_PI_2, -FRAC_PI_2, 0.0, 0.0, FRAC_PI_2, FRAC_PI_2];
-        NurbsSurface::from_flat([2, 2], [9, 5], points, weights, [circle_knots(), knots_v])
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err(Error::NotFinite {
+                what: "control point",
+            });
+        }
+        // Degrees, counts, knots and weights are Rhino's sphere, valid by construction: only
+        // the control points (which overflow for radii near `f64::MAX`) need checking, and the
+        // weights and knots are the same for every sphere.
+        let (weights, knots_u, knots_v) = sphere_pattern();
+        Ok(NurbsSurface {
+            degree_u: 2,
+            degree_v: 2,
+            count_u: 9,
+            count_v: 5,
+            points,
+            weights: weights.to_vec(),
+            knots_u: knots_u.to_vec(),
+            knots_v: knots_v.to_vec(),
+            rational: true,
+        })
     }
 }
 
@@ -423,6 +460,25 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn the_sphere_built_without_checks_passes_them() {
+        let s = Sphere::from_plane(tilted(), 1.5)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let checked = NurbsSurface::from_flat(
+            [2, 2],
+            [9, 5],
+            s.points.clone(),
+            s.weights.clone(),
+            [s.knots_u.clone(), s.knots_v.clone()],
+        )
+        .unwrap();
+        assert_eq!(checked, s);
+        assert_eq!(s.weights[1], 1.0 / 2f64.sqrt());
+        assert_eq!(s.weights[6], 0.5);
     }
 
     #[test]

@@ -209,7 +209,7 @@ fn fillet_unsupported(r: f64) -> Result<(), NodeError> {
     Ok(())
 }
 
-fn curve_of(p: Polyline) -> Shared<Curve> {
+pub(crate) fn curve_of(p: Polyline) -> Shared<Curve> {
     Shared::new(Curve::from(p))
 }
 

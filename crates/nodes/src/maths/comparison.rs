@@ -3,7 +3,7 @@
 //! Comparisons are exact (Grasshopper has a separate Similarity component for comparing with a
 //! tolerance). A NaN input makes every comparison false (and Inequality true), with a warning.
 
-use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Solve};
+use locus_runtime::{DataType, ItemReport, NodeRegistry, NodeType, Port};
 
 /// Id of [`larger_than`].
 pub const LARGER_THAN: &str = "maths.larger_than";
@@ -38,7 +38,7 @@ pub fn larger_than() -> NodeType {
     .gh_guid("30d58600-1aab-42db-80a3-f1ea6c4269a0")
     .output(Port::new("Larger than", ">", DataType::Boolean).doc("True if A > B."))
     .output(Port::new("… or Equal to", ">=", DataType::Boolean).doc("True if A ≥ B."))
-    .solve(|s| compare(s, |a, b| (a > b, a >= b)))
+    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a > b, a >= b))))
 }
 
 /// Smaller Than \[Smaller\]: `A < B` and `A <= B`.
@@ -52,7 +52,7 @@ pub fn smaller_than() -> NodeType {
     .gh_guid("ae840986-cade-4e5a-96b0-570f007d4fc0")
     .output(Port::new("Smaller than", "<", DataType::Boolean).doc("True if A < B."))
     .output(Port::new("… or Equal to", "<=", DataType::Boolean).doc("True if A ≤ B."))
-    .solve(|s| compare(s, |a, b| (a < b, a <= b)))
+    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a < b, a <= b))))
 }
 
 /// Equality \[Equals\]: `A = B` and `A ≠ B`.
@@ -66,19 +66,21 @@ pub fn equality() -> NodeType {
     .gh_guid("5db0fb89-4f22-4f09-a777-fa5e55aed7ec")
     .output(Port::new("Equality", "=", DataType::Boolean).doc("True if A = B exactly."))
     .output(Port::new("Inequality", "≠", DataType::Boolean).doc("True if A ≠ B."))
-    .solve(|s| compare(s, |a, b| (a == b, a != b)))
+    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a == b, a != b))))
 }
 
-fn compare(s: &mut Solve<'_>, f: impl Fn(f64, f64) -> (bool, bool)) -> Result<(), NodeError> {
-    let a = *s.item::<f64>(0)?;
-    let b = *s.item::<f64>(1)?;
+/// The two results of a comparison, with a warning when an input is NaN.
+#[inline(always)]
+fn compare(
+    a: f64,
+    b: f64,
+    report: &mut ItemReport,
+    f: impl Fn(f64, f64) -> (bool, bool),
+) -> (bool, bool) {
     if a.is_nan() || b.is_nan() {
-        s.warning("an input is NaN, which compares false with everything");
+        report.warning("an input is NaN, which compares false with everything");
     }
-    let (first, second) = f(a, b);
-    s.set(0, first);
-    s.set(1, second);
-    Ok(())
+    f(a, b)
 }
 
 #[cfg(test)]

@@ -25,6 +25,10 @@ pub const RADIANS: &str = "maths.radians";
 pub const DEGREES: &str = "maths.degrees";
 /// Id of [`bounds`].
 pub const BOUNDS: &str = "maths.bounds";
+/// Id of [`pi`].
+pub const PI: &str = "maths.pi";
+/// Id of [`one_over_x`].
+pub const ONE_OVER_X: &str = "maths.one_over_x";
 
 /// Registers the utility, trigonometry and Bounds nodes.
 pub fn register(registry: &mut NodeRegistry) {
@@ -36,6 +40,8 @@ pub fn register(registry: &mut NodeRegistry) {
         radians(),
         degrees(),
         bounds(),
+        pi(),
+        one_over_x(),
     ] {
         registry.register(t);
     }
@@ -209,6 +215,37 @@ pub fn degrees() -> NodeType {
         .lift1(|r: &f64| Ok(r.to_degrees()))
 }
 
+/// Pi \[Pi\]: a multiple of π.
+pub fn pi() -> NodeType {
+    util(PI, "Pi", "Pi")
+        .gh_guid("0d2ccfb3-9d41-4759-9452-da6a522c3eaa")
+        .description("Returns N times π (π = 3.141592653589793, the nearest double).")
+        .input(
+            Port::new("Factor", "N", DataType::Number)
+                .doc("The factor to multiply π by; default 1.")
+                .default_value(1.0),
+        )
+        .output(Port::new("Output", "y", DataType::Number).doc("N · π."))
+        .lift1(|n: &f64| Ok(n * std::f64::consts::PI))
+}
+
+/// One Over X \[1/x\]: the reciprocal of a number.
+pub fn one_over_x() -> NodeType {
+    NodeType::new(ONE_OVER_X, "One Over X", "1/x", "Maths")
+        .subcategory("Polynomials")
+        .gh_guid("797d922f-3a1d-46fe-9155-358b009b5997")
+        .description("Computes 1 / x. Zero has no reciprocal: it is an error for that item.")
+        .input(Port::new("Value", "x", DataType::Number).doc("The number."))
+        .output(Port::new("Result", "y", DataType::Number).doc("1 / x."))
+        .lift1(|x: &f64| {
+            if *x == 0.0 {
+                Err(NodeError("x is 0, which has no reciprocal".into()))
+            } else {
+                Ok(1.0 / x)
+            }
+        })
+}
+
 /// Bounds \[Bnd\]: the domain from the smallest to the largest number of a list.
 pub fn bounds() -> NodeType {
     NodeType::new(BOUNDS, "Bounds", "Bnd", "Maths")
@@ -270,6 +307,33 @@ mod tests {
 
     use super::*;
     use crate::maths::test_support::{assert_clean, is_null, messages, numbers, only};
+
+    #[test]
+    fn pi_and_one_over_x() {
+        let r = NodeCall::new(&pi())
+            .input(DataTree::from_list(vec![1.0, 2.0, -0.5]))
+            .run();
+        assert_eq!(
+            numbers(&r.outputs[0]),
+            [
+                std::f64::consts::PI,
+                std::f64::consts::TAU,
+                -std::f64::consts::FRAC_PI_2
+            ]
+        );
+        let r = NodeCall::new(&one_over_x())
+            .input(DataTree::from_list(vec![4.0, 0.0, -0.25]))
+            .run();
+        let texts = messages(&r, Level::Error);
+        assert_eq!(texts.len(), 1, "{texts:?}");
+        assert!(texts[0].contains("x is 0"), "{texts:?}");
+        assert_eq!(r.messages[0].index, Some(1));
+        let out: Vec<Option<f64>> = r.outputs[0]
+            .values()
+            .map(|v| v.and_then(|v| v.get::<f64>()))
+            .collect();
+        assert_eq!(out, [Some(0.25), None, Some(-4.0)]);
+    }
 
     fn generic(items: Vec<Option<Value>>) -> DataTree {
         let mut b = Branch::new(DataType::Generic);

@@ -4,9 +4,11 @@
 use std::f64::consts::FRAC_PI_2;
 
 use locus_kernel::{Line, Plane, Point3, Transform, Vector3};
-use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port};
 
-use super::{finish, geometry_input, geometry_output, transform_node, transform_output};
+use super::{
+    finish, geometry_input, geometry_output, transform_node, transform_output, transform_point,
+};
 
 /// Id of [`move_geometry`].
 pub const MOVE: &str = "transform.move";
@@ -69,6 +71,9 @@ pub fn move_geometry() -> NodeType {
             let t = *s.item::<Vector3>(1)?;
             finish(s, Transform::translation(t))
         })
+        .fast_path2_with(|p: &Point3, t: &Vector3, report| {
+            Some(transform_point(*p, Transform::translation(*t), report))
+        })
 }
 
 /// Rotate \[Rotate\]: a rotation in a plane, about its normal through its origin.
@@ -96,6 +101,13 @@ pub fn rotate() -> NodeType {
             let angle = *s.item::<f64>(1)?;
             let plane = *s.item::<Plane>(2)?;
             finish(s, Transform::rotation(angle, plane.normal(), plane.origin)?)
+        })
+        .fast_path3_with(|p: &Point3, angle: &f64, plane: &Plane, report| {
+            Some(
+                Transform::rotation(*angle, plane.normal(), plane.origin)
+                    .map_err(NodeError::from)
+                    .and_then(|xform| transform_point(*p, xform, report)),
+            )
         })
 }
 

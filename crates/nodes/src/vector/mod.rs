@@ -16,6 +16,7 @@
 //! Grasshopper: Maths › Addition, Subtraction and Multiplication take vectors and points, and
 //! [Amplitude](vectors::amplitude) sets a vector's length.
 
+pub mod grid;
 pub mod plane;
 pub mod point;
 pub mod products;
@@ -23,7 +24,7 @@ pub mod pull;
 pub mod vectors;
 
 use locus_kernel::{Point3, Vector3};
-use locus_runtime::{NodeError, NodeRegistry, Solve};
+use locus_runtime::{ItemReport, NodeError, NodeRegistry};
 
 /// Registers every Vector node type.
 pub fn register(registry: &mut NodeRegistry) {
@@ -32,6 +33,7 @@ pub fn register(registry: &mut NodeRegistry) {
     vectors::register(registry);
     products::register(registry);
     plane::register(registry);
+    grid::register(registry);
 }
 
 /// `x`, or an error saying that `what` is not a finite number.
@@ -67,9 +69,9 @@ pub(crate) fn finite_vector(v: Vector3, what: &str) -> Result<Vector3, NodeError
 
 /// Warns, for nodes that take geometry apart, that `what` has a NaN or infinite coordinate:
 /// the numbers are still written (as NaN or infinity) so that lists stay aligned.
-pub(crate) fn warn_unless_finite(s: &mut Solve<'_>, finite: bool, what: &str) {
+pub(crate) fn warn_unless_finite(report: &mut ItemReport, finite: bool, what: &str) {
     if !finite {
-        s.warning(format!(
+        report.warning(format!(
             "{what} has a coordinate that is not finite; its numbers are not finite either"
         ));
     }

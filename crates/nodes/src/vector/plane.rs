@@ -198,14 +198,9 @@ pub fn deconstruct_plane() -> NodeType {
         .output(Port::new("X-Axis", "X", DataType::Vector).doc("The unit x axis."))
         .output(Port::new("Y-Axis", "Y", DataType::Vector).doc("The unit y axis."))
         .output(Port::new("Z-Axis", "Z", DataType::Vector).doc("The unit normal, x × y."))
-        .solve(|s| {
-            let p = *s.item::<Plane>(0)?;
-            warn_unless_finite(s, p.is_finite(), "plane P");
-            s.set(0, p.origin);
-            s.set(1, p.x_axis);
-            s.set(2, p.y_axis);
-            s.set(3, p.z_axis);
-            Ok(())
+        .lift1_with(|p: &Plane, report| {
+            warn_unless_finite(report, p.is_finite(), "plane P");
+            Ok((p.origin, p.x_axis, p.y_axis, p.z_axis))
         })
 }
 
@@ -235,15 +230,10 @@ pub fn plane_coefficients() -> NodeType {
             "The constant term, −normal · origin: minus the signed distance of the \
                  world origin from the plane, in model units.",
         ))
-        .solve(|s| {
-            let p = *s.item::<Plane>(0)?;
-            warn_unless_finite(s, p.is_finite(), "plane P");
+        .lift1_with(|p: &Plane, report| {
+            warn_unless_finite(report, p.is_finite(), "plane P");
             let [a, b, c, d] = p.equation();
-            s.set(0, a);
-            s.set(1, b);
-            s.set(2, c);
-            s.set(3, d);
-            Ok(())
+            Ok((a, b, c, d))
         })
 }
 

@@ -84,13 +84,9 @@ pub fn deconstruct_point() -> NodeType {
             Port::new("Z component", "Z", DataType::Number)
                 .doc("The z coordinate, in model units."),
         )
-        .solve(|s| {
-            let p = *s.item::<Point3>(0)?;
-            warn_unless_finite(s, p.is_finite(), "point P");
-            s.set(0, p.x);
-            s.set(1, p.y);
-            s.set(2, p.z);
-            Ok(())
+        .lift1_with(|p: &Point3, report| {
+            warn_unless_finite(report, p.is_finite(), "point P");
+            Ok((p.x, p.y, p.z))
         })
 }
 

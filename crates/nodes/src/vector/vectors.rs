@@ -83,14 +83,12 @@ pub fn vector_xyz() -> NodeType {
             Port::new("Length", "L", DataType::Number)
                 .doc("The length of the vector, in model units."),
         )
-        .solve(|s| {
-            let x = finite_number(*s.item::<f64>(0)?, "component X")?;
-            let y = finite_number(*s.item::<f64>(1)?, "component Y")?;
-            let z = finite_number(*s.item::<f64>(2)?, "component Z")?;
+        .lift3_with(|x: &f64, y: &f64, z: &f64, _| {
+            let x = finite_number(*x, "component X")?;
+            let y = finite_number(*y, "component Y")?;
+            let z = finite_number(*z, "component Z")?;
             let v = Vector3::new(x, y, z);
-            s.set(0, v);
-            s.set(1, v.length());
-            Ok(())
+            Ok((v, v.length()))
         })
 }
 
@@ -106,13 +104,9 @@ pub fn deconstruct_vector() -> NodeType {
         .output(Port::new("X component", "X", DataType::Number).doc("The x component."))
         .output(Port::new("Y component", "Y", DataType::Number).doc("The y component."))
         .output(Port::new("Z component", "Z", DataType::Number).doc("The z component."))
-        .solve(|s| {
-            let v = *s.item::<Vector3>(0)?;
-            warn_unless_finite(s, v.is_finite(), "vector V");
-            s.set(0, v.x);
-            s.set(1, v.y);
-            s.set(2, v.z);
-            Ok(())
+        .lift1_with(|v: &Vector3, report| {
+            warn_unless_finite(report, v.is_finite(), "vector V");
+            Ok((v.x, v.y, v.z))
         })
 }
 
@@ -176,21 +170,20 @@ pub fn vector_2pt() -> NodeType {
             Port::new("Length", "L", DataType::Number)
                 .doc("The distance from A to B (the length before unitizing), in model units."),
         )
-        .solve(|s| {
-            let a = finite_point(*s.item::<Point3>(0)?, "point A")?;
-            let b = finite_point(*s.item::<Point3>(1)?, "point B")?;
-            let unitize = *s.item::<bool>(2)?;
+        .lift3_with(|a: &Point3, b: &Point3, unitize: &bool, report| {
+            let a = finite_point(*a, "point A")?;
+            let b = finite_point(*b, "point B")?;
             let v = b - a;
-            s.set(1, v.length());
-            s.set(
-                0,
-                if unitize {
-                    unit(v, "the vector from A to B")?
-                } else {
-                    v
-                },
-            );
-            Ok(())
+            let vector = if *unitize {
+                // The length is still given when the vector has no direction.
+                unit(v, "the vector from A to B").unwrap_or_else(|e| {
+                    report.error(0, e.0);
+                    Vector3::ZERO
+                })
+            } else {
+                v
+            };
+            Ok((vector, v.length()))
         })
 }
 

@@ -73,6 +73,11 @@ struct NodeState {
     messages: Vec<Message>,
     dirty: bool,
     prepared: Option<Result<Prepared, NodeError>>,
+    /// For each output, whether the last run left it empty because nothing read it; it is
+    /// computed when a host first asks for it (see `late`).
+    skipped: Vec<bool>,
+    /// Skipped outputs computed on request.
+    late: Vec<std::sync::OnceLock<DataTree>>,
 }
 
 /// A graph ready to evaluate, with its named inputs and the latest results.
@@ -107,6 +112,9 @@ pub struct Evaluator {
     held_total: usize,
     /// The observer told of each evaluation's progress, if any.
     progress: Option<ProgressHook>,
+    /// For each node, which outputs are read by a wire or a named output (the others are
+    /// computed only when a host asks for them).
+    wanted: Vec<Vec<bool>>,
 }
 
 impl Evaluator {
@@ -147,8 +155,11 @@ impl Evaluator {
                 messages: Vec::new(),
                 dirty: true,
                 prepared: None,
+                skipped: Vec::new(),
+                late: Vec::new(),
             })
             .collect();
+        let wanted = late::wanted_outputs(&plan);
         let overrides = vec![None; plan.inputs.len()];
         let ports = plan
             .nodes
@@ -170,6 +181,7 @@ impl Evaluator {
             held: vec![0; n],
             held_total: 0,
             progress: None,
+            wanted,
         }
     }
 
@@ -428,6 +440,8 @@ impl Evaluator {
         for tree in &mut self.states[i].outputs {
             *tree = Arc::new(DataTree::new());
         }
+        self.states[i].skipped.clear();
+        self.states[i].late.clear();
         self.held_total -= self.held[i];
         self.held[i] = 0;
     }
@@ -458,7 +472,10 @@ impl Evaluator {
             self.held[i] = entries;
             self.held_total += entries;
         }
+        let wanted = &self.wanted[i];
         let state = &mut self.states[i];
+        state.skipped = wanted.iter().map(|w| !w).collect();
+        state.late = wanted.iter().map(|_| std::sync::OnceLock::new()).collect();
         state.outputs = out.outputs.into_iter().map(Arc::new).collect();
         state.messages = out.messages;
         state.dirty = false;
@@ -497,6 +514,17 @@ impl Evaluator {
 
     /// Runs one node on the current outputs of its sources.
     fn run(&self, i: usize, parallel: bool, budget: &Budget) -> NodeOutput {
+        self.run_wanting(i, parallel, budget, &self.wanted[i])
+    }
+
+    /// Runs one node, computing the outputs marked in `wanted` (the others stay empty).
+    fn run_wanting(
+        &self,
+        i: usize,
+        parallel: bool,
+        budget: &Budget,
+        wanted: &[bool],
+    ) -> NodeOutput {
         let node = &self.plan.nodes[i];
         let n_outputs = node.node_type.outputs.len();
         let empty = || NodeOutput {
@@ -566,6 +594,7 @@ impl Evaluator {
             matching: node.matching,
             principal: node.principal_input(),
             prepared,
+            wanted,
             budget,
         };
         let refs: Vec<&DataTree> = data.iter().map(|d| &**d).collect();
@@ -623,7 +652,7 @@ impl Evaluator {
     /// The data of a named output after the last evaluation.
     pub fn output(&self, name: &str) -> Option<&DataTree> {
         let &(_, node, port) = self.plan.outputs.iter().find(|(n, _, _)| n == name)?;
-        Some(&self.states[node].outputs[port])
+        Some(self.tree(node, port))
     }
 
     /// Every named output with its data, in the graph's order.
@@ -631,14 +660,14 @@ impl Evaluator {
         self.plan
             .outputs
             .iter()
-            .map(|(name, node, port)| (name.as_str(), &*self.states[*node].outputs[*port]))
+            .map(|(name, node, port)| (name.as_str(), self.tree(*node, *port)))
     }
 
     /// The data of output `port` (nickname or name) of node `node`.
     pub fn node_output(&self, node: &str, port: &str) -> Option<&DataTree> {
         let i = self.plan.nodes.iter().position(|n| n.id.0 == node)?;
         let k = self.plan.nodes[i].node_type.output_index(port)?;
-        Some(&self.states[i].outputs[k])
+        Some(self.tree(i, k))
     }
 
     /// The data of output `output` of the node at index `node` of the plan.
@@ -646,7 +675,7 @@ impl Evaluator {
     /// # Panics
     /// When the indices are out of range.
     pub fn node_output_at(&self, node: usize, output: usize) -> &DataTree {
-        &self.states[node].outputs[output]
+        self.tree(node, output)
     }
 
     /// Every runtime message of the last evaluation (kept for nodes that did not re-run), in
@@ -675,6 +704,8 @@ impl Evaluator {
             .collect()
     }
 }
+
+mod late;
 
 #[cfg(test)]
 mod tests {

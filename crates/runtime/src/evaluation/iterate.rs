@@ -8,7 +8,9 @@
 //! 3. Within a branch, item-access inputs are matched item by item with the node's
 //!    [`Matching`]: longest list (shorter lists repeat their last item), shortest list, or cross
 //!    reference (every combination, the first input varying fastest). List-access inputs see
-//!    the whole branch.
+//!    the whole branch; under cross reference a list input's branch is one more wheel of the
+//!    odometer (each of its branches meets every item combination), and only the other
+//!    inputs' branches are paired.
 //! 4. Outputs go to the path of the *principal* input (marked, else the only input, else the
 //!    most complex one, ties to the first). When the principal input runs out of branches its
 //!    last path is reused with its last index offset by 1, 2, … (the collision offset).
@@ -53,6 +55,9 @@ pub(crate) struct NodeRun<'a> {
     pub(crate) matching: Matching,
     pub(crate) principal: Option<usize>,
     pub(crate) prepared: Option<&'a Prepared>,
+    /// For each output, whether anything reads it (a wire, a named output, a host): the others
+    /// are left empty.
+    pub(crate) wanted: &'a [bool],
     /// The item budget, deadline and cancellation.
     pub(crate) budget: &'a Budget,
 }
@@ -83,6 +88,9 @@ struct BranchIteration<'a> {
     branches: Vec<Option<&'a Branch>>,
     lengths: Vec<usize>,
     count: usize,
+    /// Under cross reference, the list inputs that step their branch inside the odometer,
+    /// with all their branches (reference §2.2).
+    steps: Vec<(usize, &'a [(TreePath, Branch)])>,
 }
 
 /// A contiguous range of iterations within one branch iteration.
@@ -266,10 +274,12 @@ fn stitch(node_id: &NodeId, outputs: &[Port], segments: Vec<Segment>) -> NodeOut
     }
 }
 
-fn new_sinks(outputs: &[Port]) -> Vec<OutputSink> {
+fn new_sinks(outputs: &[Port], wanted: &[bool]) -> Vec<OutputSink> {
     outputs
         .iter()
-        .map(|p| OutputSink {
+        .enumerate()
+        .map(|(o, p)| OutputSink {
+            skip: !wanted.get(o).copied().unwrap_or(true),
             access: p.access,
             data_type: p.data_type,
             pieces: Vec::new(),
@@ -281,9 +291,9 @@ fn new_sinks(outputs: &[Port]) -> Vec<OutputSink> {
 
 fn solve_once(run: &NodeRun<'_>, data: &[&DataTree]) -> Segment {
     let path = TreePath::zero();
-    let mut sinks = new_sinks(&run.node_type.outputs);
+    let mut sinks = new_sinks(&run.node_type.outputs, run.wanted);
     for sink in &mut sinks {
-        if sink.access == Access::Item {
+        if sink.access == Access::Item && !sink.skip {
             sink.pieces
                 .push((path.clone(), Branch::new(sink.data_type)));
         }
@@ -323,9 +333,9 @@ fn run_task(
     has_item: bool,
 ) -> Segment {
     let ports = run.inputs;
-    let mut sinks = new_sinks(&run.node_type.outputs);
+    let mut sinks = new_sinks(&run.node_type.outputs, run.wanted);
     for sink in &mut sinks {
-        if sink.access == Access::Item {
+        if sink.access == Access::Item && !sink.skip {
             let column = crate::Column::with_capacity(sink.data_type, task.end - task.start);
             sink.pieces
                 .push((bi.target.clone(), Branch::from_column(column)));
@@ -342,8 +352,10 @@ fn run_task(
         })
         .collect();
     let mut messages: Vec<RawMessage> = Vec::new();
-    let item_inputs: Vec<usize> = (0..ports.len())
-        .filter(|&i| ports[i].access == Access::Item)
+    // The odometer's wheels in input order, the first turning fastest: item inputs step
+    // their item, stepping list inputs (cross reference) their branch.
+    let wheels: Vec<usize> = (0..ports.len())
+        .filter(|&i| ports[i].access == Access::Item || bi.steps.iter().any(|&(s, _)| s == i))
         .collect();
     let max_items = run.budget.max_items;
     let mut limit = None;
@@ -356,7 +368,16 @@ fn run_task(
         let mut empty_gap = false;
         // Cross reference: decompose k over the item inputs, the first varying fastest.
         let mut rest = k;
-        for &i in &item_inputs {
+        for &i in &wheels {
+            if let Some(&(_, branches)) = bi.steps.iter().find(|&&(s, _)| s == i) {
+                let b = &branches[rest % branches.len()].1;
+                rest /= branches.len();
+                cursors[i] = Cursor::List(Some(b));
+                if !ports[i].optional {
+                    skip |= b.is_empty();
+                }
+                continue;
+            }
             let len = bi.lengths[i];
             let index = if len == 0 {
                 None
@@ -384,7 +405,10 @@ fn run_task(
             }
         }
         for (i, port) in ports.iter().enumerate() {
-            if port.access == Access::List && !port.optional {
+            if port.access == Access::List
+                && !port.optional
+                && !bi.steps.iter().any(|&(s, _)| s == i)
+            {
                 skip |= bi.branches[i].is_none_or(Branch::is_empty);
             }
         }
@@ -410,7 +434,7 @@ fn run_task(
             }
         }
         for sink in &mut sinks {
-            if !sink.set {
+            if !sink.set && !sink.skip {
                 match sink.access {
                     Access::Item => {
                         if !empty_gap && let Some((_, b)) = sink.pieces.last_mut() {

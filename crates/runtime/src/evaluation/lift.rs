@@ -15,23 +15,42 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use rayon::prelude::*;
 
-use crate::{Branch, DataType, Item, NodeError, NodeType};
+use crate::{Branch, DataType, Item, Level, NodeError, NodeType};
+
+pub use many::{ItemReport, Outputs};
 
 /// Items per parallel chunk of a lifted loop.
 const LIFT_CHUNK: usize = 16_384;
 
-/// The output branch of a lifted loop, and the failed items as (index, message).
-pub(crate) type LiftOutput = (Branch, Vec<(usize, String)>);
+/// The output branch of a one-output lifted loop, and the failed items as (index, message).
+type OneOutput = (Branch, Vec<(usize, String)>);
+
+/// The output branches of a lifted loop (one per output, empty for an output not wanted) and
+/// its messages as (index, level, text), in index order.
+pub(crate) type LiftOutput = (Vec<Branch>, Vec<(usize, Level, String)>);
 
 /// The loop of a lifted function over one branch pairing: the input branches (each non-empty
-/// and of the declared type), the number of iterations, and whether to use threads.
-pub(crate) type LiftLoop = Arc<dyn Fn(&[&Branch], usize, bool) -> LiftOutput + Send + Sync>;
+/// and of the declared type), the number of iterations, whether to use threads, and which
+/// outputs are wanted (the others may be left empty).
+pub(crate) type LiftLoop =
+    Arc<dyn Fn(&[&Branch], usize, bool, &[bool]) -> LiftOutput + Send + Sync>;
+
+/// A one-output loop's result as a lifted loop's.
+fn one_output((branch, errors): OneOutput) -> LiftOutput {
+    (
+        vec![branch],
+        errors
+            .into_iter()
+            .map(|(k, text)| (k, Level::Error, text))
+            .collect(),
+    )
+}
 
 /// A lifted item function: its input and output types, and the loop over one branch pairing.
 #[derive(Clone)]
 pub(crate) struct Lift {
     pub(crate) inputs: Vec<DataType>,
-    pub(crate) output: DataType,
+    pub(crate) outputs: Vec<DataType>,
     /// Runs the function over `count` iterations of the given input branches (each non-empty
     /// and of the declared type), in parallel when asked.
     pub(crate) run: LiftLoop,
@@ -41,7 +60,7 @@ impl std::fmt::Debug for Lift {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Lift")
             .field("inputs", &self.inputs)
-            .field("output", &self.output)
+            .field("outputs", &self.outputs)
             .finish_non_exhaustive()
     }
 }
@@ -167,7 +186,7 @@ fn lift_loop<O: Item, I, P>(
     f: impl Fn(usize) -> Result<O, NodeError> + Sync,
     results: impl Fn(usize, usize) -> I,
     par_results: impl FnOnce(usize, usize) -> P,
-) -> LiftOutput
+) -> OneOutput
 where
     I: Iterator<Item = Result<O, NodeError>>,
     P: IndexedParallelIterator<Item = Result<O, NodeError>>,
@@ -279,27 +298,38 @@ fn lift2<A: Item, B: Item, O: Item>(
 ) -> Lift {
     Lift {
         inputs: vec![A::TYPE, B::TYPE],
-        output: O::TYPE,
-        run: Arc::new(move |b, count, parallel| {
+        outputs: vec![O::TYPE],
+        run: Arc::new(move |b, count, parallel, _| {
             let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
             let (l0, l1) = (a0.len(), a1.len());
             let g = &*g;
             let any_nulls = b[0].has_nulls() || b[1].has_nulls();
             let nulls = move |k| b[0].is_null(at(k, l0)) || b[1].is_null(at(k, l1));
-            with_src!(a0, count, |s0| with_src!(a1, count, |s1| lift_loop(
-                count,
-                parallel,
-                any_nulls,
-                nulls,
-                move |k| g(s0.get(k), s1.get(k)),
-                move |i, j| s0.iter(i, j).zip(s1.iter(i, j)).map(|(x, y)| g(x, y)),
-                move |i, j| s0.par(i, j).zip(s1.par(i, j)).map(|(x, y)| g(x, y))
-            )))
+            one_output(with_src!(a0, count, |s0| with_src!(a1, count, |s1| {
+                lift_loop(
+                    count,
+                    parallel,
+                    any_nulls,
+                    nulls,
+                    move |k| g(s0.get(k), s1.get(k)),
+                    move |i, j| s0.iter(i, j).zip(s1.iter(i, j)).map(|(x, y)| g(x, y)),
+                    move |i, j| s0.par(i, j).zip(s1.par(i, j)).map(|(x, y)| g(x, y)),
+                )
+            })))
         }),
     }
 }
 
 impl NodeType {
+    /// The same node type without its lifted loop and fast paths, so that every call runs the
+    /// general solve function: for tests and benchmarks that compare the two.
+    #[must_use]
+    pub fn general_only(mut self) -> Self {
+        self.lift = None;
+        self.fast_paths.clear();
+        self
+    }
+
     /// Sets the solve function to a plain function of one typed item, lifted by the runtime
     /// over trees: input 0 is read as an `A`, the result is output 0. The input and output
     /// ports are declared as usual, with item access and the types of `A` and `O`.
@@ -326,14 +356,14 @@ impl NodeType {
         });
         node.lift = Some(Lift {
             inputs: vec![A::TYPE],
-            output: O::TYPE,
-            run: Arc::new(move |b, count, parallel| {
+            outputs: vec![O::TYPE],
+            run: Arc::new(move |b, count, parallel, _| {
                 let a = items::<A>(b[0]);
                 let la = a.len();
                 let g = &*g;
                 let nulls = move |k| b[0].is_null(at(k, la));
                 // `move` closures copy the sources, so the loop keeps them in registers.
-                with_src!(a, count, |s0| lift_loop(
+                one_output(with_src!(a, count, |s0| lift_loop(
                     count,
                     parallel,
                     b[0].has_nulls(),
@@ -341,7 +371,7 @@ impl NodeType {
                     move |k| g(s0.get(k)),
                     move |i, j| s0.iter(i, j).map(g),
                     move |i, j| s0.par(i, j).map(g)
-                ))
+                )))
             }),
         });
         node
@@ -435,12 +465,12 @@ impl NodeType {
         });
         node.lift = Some(Lift {
             inputs: vec![A::TYPE, B::TYPE, C::TYPE],
-            output: O::TYPE,
-            run: Arc::new(move |b, count, parallel| {
+            outputs: vec![O::TYPE],
+            run: Arc::new(move |b, count, parallel, _| {
                 let (a0, a1, a2) = (items::<A>(b[0]), items::<B>(b[1]), items::<C>(b[2]));
                 let (l0, l1, l2) = (a0.len(), a1.len(), a2.len());
                 let g = &*g;
-                lift_loop(
+                one_output(lift_loop(
                     count,
                     parallel,
                     b.iter().any(|b| b.has_nulls()),
@@ -458,9 +488,12 @@ impl NodeType {
                             .into_par_iter()
                             .map(move |k| g(&a0[at(k, l0)], &a1[at(k, l1)], &a2[at(k, l2)]))
                     },
-                )
+                ))
             }),
         });
         node
     }
 }
+
+// After `with_src!`, which the loops with several outputs use too.
+mod many;

@@ -33,6 +33,8 @@ pub(crate) struct OutputSink {
     /// An upper bound of the items and branches set as lists and trees so far (for the item
     /// budget; item outputs are counted before the node runs).
     pub(crate) listed: usize,
+    /// Nothing reads this output: what the node sets is dropped.
+    pub(crate) skip: bool,
 }
 
 /// The context of one iteration: what the node reads and writes.
@@ -267,7 +269,7 @@ impl<'a> Solve<'a> {
     }
 
     fn sink(&mut self, output: usize) -> Option<&mut OutputSink> {
-        self.sinks.get_mut(output)
+        self.sinks.get_mut(output).filter(|s| !s.skip)
     }
 
     /// Sets the item of an item-access output for this iteration (a second call replaces it).

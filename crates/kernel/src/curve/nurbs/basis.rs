@@ -89,8 +89,29 @@ pub fn basis_function_derivatives(
     n_ders: usize,
     ders: &mut [[f64; MAX_ORDER]],
 ) {
+    // The triangle of basis functions and knot differences is `(degree + 1)²`; sizing it for
+    // the degree at hand keeps the common low degrees from clearing a `MAX_ORDER²` table on
+    // every call.
+    if degree < 4 {
+        derivatives_with_table::<4>(degree, knots, span, t, n_ders, ders);
+    } else if degree < 8 {
+        derivatives_with_table::<8>(degree, knots, span, t, n_ders, ders);
+    } else {
+        derivatives_with_table::<MAX_ORDER>(degree, knots, span, t, n_ders, ders);
+    }
+}
+
+/// [`basis_function_derivatives`] with an `N × N` triangle (`N > degree`).
+fn derivatives_with_table<const N: usize>(
+    degree: usize,
+    knots: &[f64],
+    span: usize,
+    t: f64,
+    n_ders: usize,
+    ders: &mut [[f64; MAX_ORDER]],
+) {
     let p = degree;
-    let mut ndu = [[0.0; MAX_ORDER]; MAX_ORDER];
+    let mut ndu = [[0.0; N]; N];
     let mut left = [0.0; MAX_ORDER];
     let mut right = [0.0; MAX_ORDER];
     ndu[0][0] = 1.0;
@@ -115,7 +136,7 @@ pub fn basis_function_derivatives(
     for j in 0..=p {
         ders[0][j] = ndu[j][p];
     }
-    let mut a = [[0.0; MAX_ORDER]; 2];
+    let mut a = [[0.0; N]; 2];
     let top = n_ders.min(p);
     for r in 0..=p {
         let (mut s1, mut s2) = (0usize, 1usize);

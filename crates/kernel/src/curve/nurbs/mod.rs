@@ -317,8 +317,16 @@ impl NurbsCurve {
     ) {
         let p = self.degree;
         let top = order.min(p);
-        let mut ders = [[0.0; MAX_ORDER]; MAX_ORDER];
-        basis::basis_function_derivatives(p, &self.knots, span, t, top, &mut ders[..=top]);
+        // Rows for the derivatives asked for only (most callers want up to the second).
+        let mut few = [[0.0; MAX_ORDER]; 3];
+        let mut all;
+        let ders: &mut [[f64; MAX_ORDER]] = if top < few.len() {
+            &mut few[..=top]
+        } else {
+            all = [[0.0; MAX_ORDER]; MAX_ORDER];
+            &mut all[..=top]
+        };
+        basis::basis_function_derivatives(p, &self.knots, span, t, top, ders);
         let first = span + 1 - p;
         for (k, row) in ders.iter().enumerate().take(top + 1) {
             let mut acc = [0.0; 4];

@@ -2,8 +2,9 @@
 
 use super::*;
 
-/// Runs a node declared with `lift1`/`lift2`/`lift3` as loops over typed columns, when its
-/// ports and data fit the loop (see `lift`); `None` to take the general path.
+/// Runs a node declared with `lift1`/`lift2`/`lift3` (or their `_with` forms) as loops over
+/// typed columns, when its ports and data fit the loop (see `lift`); `None` to take the
+/// general path.
 pub(super) fn run_lifted(
     run: &NodeRun<'_>,
     data: &[&DataTree],
@@ -33,10 +34,12 @@ fn run_lift(
             .inputs
             .iter()
             .zip(&lift.inputs)
-            .all(|(p, &t)| p.access == Access::Item && !p.optional && takes(p.data_type, t))
-        && outputs.len() == 1
-        && outputs[0].access == Access::Item
-        && takes(outputs[0].data_type, lift.output)
+            .all(|(p, &t)| p.access == Access::Item && takes(p.data_type, t))
+        && outputs.len() == lift.outputs.len()
+        && outputs
+            .iter()
+            .zip(&lift.outputs)
+            .all(|(p, &t)| p.access == Access::Item && takes(p.data_type, t))
         && run.matching != Matching::Cross
         && !run.inputs.is_empty();
     if !fits {
@@ -45,17 +48,33 @@ fn run_lift(
     // Above the item budget: the general path reports it.
     let iterations = branch_iterations(run, data).ok()?;
     // Every branch must hold its port's type (casting made it so; a generic column would not).
+    // An optional input takes part only with a full branch without nulls in every pairing,
+    // where it reads as a required one does.
     let typed = iterations.iter().all(|bi| {
         bi.branches
             .iter()
             .zip(&lift.inputs)
-            .all(|(b, &t)| b.is_none_or(|b| b.is_empty() || b.data_type() == t))
+            .zip(run.inputs)
+            .all(|((b, &t), port)| {
+                if port.optional {
+                    b.is_some_and(|b| !b.is_empty() && !b.has_nulls() && b.data_type() == t)
+                } else {
+                    b.is_none_or(|b| b.is_empty() || b.data_type() == t)
+                }
+            })
     });
     if !typed {
         return None;
     }
+    let wanted = run.wanted;
     let total: usize = iterations.iter().map(|bi| bi.count).sum();
     let parallel = parallel && total >= PARALLEL_THRESHOLD;
+    let empty = || -> (Vec<Branch>, Vec<(usize, Level, String)>) {
+        (
+            lift.outputs.iter().map(|&t| Branch::new(t)).collect(),
+            Vec::new(),
+        )
+    };
     let one = |bi: &BranchIteration<'_>| {
         let branches: Option<Vec<&Branch>> = bi
             .branches
@@ -64,14 +83,19 @@ fn run_lift(
             .collect();
         match branches {
             // A required input with an empty branch: the output branch is empty (gap logic).
-            None => (Branch::new(lift.output), Vec::new()),
-            Some(_) if bi.count == 0 => (Branch::new(lift.output), Vec::new()),
-            Some(b) => (lift.run)(&b, bi.count, parallel && bi.count >= PARALLEL_THRESHOLD),
+            None => empty(),
+            Some(_) if bi.count == 0 => empty(),
+            Some(b) => (lift.run)(
+                &b,
+                bi.count,
+                parallel && bi.count >= PARALLEL_THRESHOLD,
+                wanted,
+            ),
         }
     };
     // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
     // over threads only when items are slow enough for that to pay (as within one branch).
-    let results: Vec<(Branch, Vec<(usize, String)>)> = if parallel && iterations.len() > 1 {
+    let results: Vec<crate::evaluation::lift::LiftOutput> = if parallel && iterations.len() > 1 {
         let started = std::time::Instant::now();
         let first = one(&iterations[0]);
         let spread =
@@ -89,27 +113,42 @@ fn run_lift(
         iterations.iter().map(one).collect()
     };
     // A fast path that left an item to the solve function: run the node the general way.
-    if results.iter().any(|(_, errors)| {
-        errors
+    if results.iter().any(|(_, messages)| {
+        messages
             .iter()
-            .any(|(_, text)| text == crate::evaluation::lift::FALL_BACK)
+            .any(|(_, _, text)| text == crate::evaluation::lift::FALL_BACK)
     }) {
         return None;
     }
     let mut messages = Vec::new();
-    let mut pieces = Vec::with_capacity(iterations.len());
-    for (bi, (branch, errors)) in iterations.iter().zip(results) {
-        messages.extend(errors.into_iter().map(|(k, text)| Message {
+    let mut pieces: Vec<Vec<(TreePath, Branch)>> = outputs
+        .iter()
+        .map(|_| Vec::with_capacity(iterations.len()))
+        .collect();
+    for (bi, (branches, reported)) in iterations.iter().zip(results) {
+        messages.extend(reported.into_iter().map(|(k, level, text)| Message {
             node: run.node_id.clone(),
-            level: Level::Error,
+            level,
             path: Some(bi.target.clone()),
             index: Some(k),
             text,
         }));
-        pieces.push((bi.target.clone(), branch));
+        for (o, branch) in branches.into_iter().enumerate() {
+            pieces[o].push((bi.target.clone(), branch));
+        }
     }
     Some(NodeOutput {
-        outputs: vec![DataTree::from_branches(pieces)],
+        outputs: pieces
+            .into_iter()
+            .enumerate()
+            .map(|(o, p)| {
+                if wanted.get(o).copied().unwrap_or(true) {
+                    DataTree::from_branches(p)
+                } else {
+                    DataTree::new()
+                }
+            })
+            .collect(),
         messages,
         limit: None,
     })

@@ -40,11 +40,18 @@ pub(super) fn branch_iterations<'a>(
 ) -> Result<Vec<BranchIteration<'a>>, String> {
     let ports = run.inputs;
     let max_items = run.budget.max_items;
+    let has_item = ports.iter().any(|p| p.access == Access::Item);
+    // Under cross reference, list inputs step their branch inside the odometer (reference
+    // §2.2): every branch of such an input meets every item combination, and only the other
+    // inputs' branches are paired branch by branch.
+    let stepping =
+        |i: usize| has_item && run.matching == Matching::Cross && ports[i].access == Access::List;
     let n_branches = ports
         .iter()
         .zip(data)
-        .filter(|(p, _)| p.access != Access::Tree)
-        .map(|(_, t)| t.branch_count().max(1))
+        .enumerate()
+        .filter(|(i, (p, _))| p.access != Access::Tree && !stepping(*i))
+        .map(|(_, (_, t))| t.branch_count().max(1))
         .max()
         .unwrap_or(1);
     // Every branch pairing makes at least one branch in each output: count them before
@@ -56,7 +63,14 @@ pub(super) fn branch_iterations<'a>(
         ));
     }
     let principal = principal_input(run, data).filter(|&p| ports[p].access != Access::Tree);
-    let has_item = ports.iter().any(|p| p.access == Access::Item);
+    // The stepping list inputs with their branches, in input order.
+    let steps: Vec<(usize, &'a [(TreePath, Branch)])> = (0..ports.len())
+        .filter(|&i| stepping(i) && data[i].branch_count() > 0)
+        .map(|i| (i, data[i].branches()))
+        .collect();
+    let step_product = steps
+        .iter()
+        .try_fold(1usize, |n, (_, b)| n.checked_mul(b.len()));
     let mut total = n_branches;
     let mut out = Vec::with_capacity(n_branches);
     for j in 0..n_branches {
@@ -94,14 +108,19 @@ pub(super) fn branch_iterations<'a>(
             match run.matching {
                 Matching::Longest => Some(item_lengths.max().unwrap_or(0)),
                 Matching::Shortest => Some(item_lengths.min().unwrap_or(0)),
-                Matching::Cross => item_lengths.try_fold(1usize, usize::checked_mul),
+                Matching::Cross => item_lengths
+                    .try_fold(1usize, usize::checked_mul)
+                    .zip(step_product)
+                    .and_then(|(a, b)| a.checked_mul(b)),
             }
         };
         let within = count
             .and_then(|c| total.checked_add(c))
             .filter(|&t| t <= max_items);
         let Some(new_total) = within else {
-            return Err(too_many(run, &target, &lengths, count, total, max_items));
+            return Err(too_many(
+                run, &steps, &target, &lengths, count, total, max_items,
+            ));
         };
         total = new_total;
         out.push(BranchIteration {
@@ -109,14 +128,17 @@ pub(super) fn branch_iterations<'a>(
             branches,
             lengths,
             count: count.unwrap_or(0),
+            steps: steps.clone(),
         });
     }
     Ok(out)
 }
 
 /// The error for iterations above the budget, naming the matching mode and the counts.
+#[allow(clippy::too_many_arguments)]
 fn too_many(
     run: &NodeRun<'_>,
+    steps: &[(usize, &[(TreePath, Branch)])],
     target: &TreePath,
     lengths: &[usize],
     count: Option<usize>,
@@ -130,6 +152,10 @@ fn too_many(
         .filter(|(p, _)| p.access == Access::Item)
         .map(|(p, l)| format!("{l} ({})", p.nickname))
         .collect();
+    let lists: Vec<String> = steps
+        .iter()
+        .map(|(i, b)| format!(" × {} branches ({})", b.len(), run.inputs[*i].nickname))
+        .collect();
     let mode = match run.matching {
         Matching::Longest => "longest list",
         Matching::Shortest => "shortest list",
@@ -137,8 +163,9 @@ fn too_many(
     };
     let count = count.map_or_else(|| "more than 2^64".to_owned(), |c| c.to_string());
     format!(
-        "{mode} of {} items at {target} gives {count} iterations (after {before} items and \
+        "{mode} of {} items{} at {target} gives {count} iterations (after {before} items and \
          branches before it), above the limit of {max_items} items per output",
-        items.join(" × ")
+        items.join(" × "),
+        lists.concat()
     )
 }

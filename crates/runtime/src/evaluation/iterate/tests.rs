@@ -68,6 +68,7 @@ fn run(node: &NodeType, matching: Matching, principal: Option<usize>, inputs: &[
         matching,
         principal,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
@@ -303,6 +304,7 @@ fn failing_iterations_leave_nulls_and_messages() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let out = run_node(&r, &refs, false);
@@ -330,6 +332,7 @@ fn large_branches_give_identical_results_in_parallel() {
         matching: Matching::Longest,
         principal: None,
         prepared: None,
+        wanted: &[],
         budget: &crate::limits::Budget::default(),
     };
     let serial = run_node(&r, &refs, false);
@@ -338,4 +341,57 @@ fn large_branches_give_identical_results_in_parallel() {
     let out = serial.outputs[0].branch(&TreePath::zero()).unwrap();
     assert_eq!(out.len(), n);
     assert_eq!(out.get::<f64>(n - 1), Some(&(n as f64 - 0.5)));
+}
+
+/// `A + Σ L1 + Σ L2 …`: an item input first, then list inputs.
+fn item_plus_sums(lists: usize, item_first: bool) -> NodeType {
+    let mut node = NodeType::new("test.item_plus_sums", "Item plus sums", "IpS", "Maths");
+    let item = Port::new("A", "A", DataType::Number);
+    let list = |i: usize| Port::new(&format!("L{i}"), &format!("L{i}"), DataType::Number).list();
+    if item_first {
+        node = node.input(item.clone());
+    }
+    for i in 0..lists {
+        node = node.input(list(i));
+    }
+    if !item_first {
+        node = node.input(item);
+    }
+    let a_at = if item_first { 0 } else { lists };
+    node.output(Port::new("Result", "R", DataType::Number))
+        .solve(move |s| {
+            let mut total = *s.item::<f64>(a_at)?;
+            for i in (0..=lists).filter(|&i| i != a_at) {
+                total += s.list::<f64>(i)?.present().sum::<f64>();
+            }
+            s.set(0, total);
+            Ok(())
+        })
+}
+
+#[test]
+fn cross_reference_steps_list_branches_inside_the_odometer() {
+    // Reference §2.2: under cross reference the list input's branch index is a wheel of the
+    // odometer, after the item input (the first input turns fastest).
+    let inputs = ["{0}:[1,2]", "{0}:[10,20] {1}:[100]"];
+    let out = run(&item_plus_sums(1, true), Matching::Cross, None, &inputs);
+    assert_eq!(out, "{0}:[31,32,101,102]");
+    // Longest list pairs the same branches branch by branch instead.
+    let out = run(&item_plus_sums(1, true), Matching::Longest, None, &inputs);
+    assert_eq!(out, "{0}:[31,32] {1}:[101,102]");
+    // With the list input first, its branch turns fastest.
+    let inputs = ["{0}:[10,20] {1}:[100]", "{0}:[1,2]"];
+    let out = run(&item_plus_sums(1, false), Matching::Cross, None, &inputs);
+    assert_eq!(out, "{0}:[31,101,32,102]");
+}
+
+#[test]
+fn cross_reference_with_two_list_inputs_crosses_their_branches() {
+    let inputs = ["{0}:[0]", "{0}:[1] {1}:[2]", "{0}:[10] {1}:[20]"];
+    let out = run(&item_plus_sums(2, true), Matching::Cross, None, &inputs);
+    assert_eq!(out, "{0}:[11,12,21,22]");
+    // An empty branch of a required list input leaves a null, as an empty item does.
+    let inputs = ["{0}:[0]", "{0}:[1] {1}:[]", "{0}:[10]"];
+    let out = run(&item_plus_sums(2, true), Matching::Cross, None, &inputs);
+    assert_eq!(out, "{0}:[11,null]");
 }

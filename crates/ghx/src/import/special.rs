@@ -1,0 +1,280 @@
+//! Objects the importer treats specially (see [`crate::known`]): pass-through parameters,
+//! widgets (sliders, panels, toggles, buttons, value lists, knobs, MD sliders) and clusters.
+
+use super::*;
+
+impl Mapper<'_> {
+    pub(super) fn pass_through(&mut self, o: &GhObject, r: ObjectRef, prefix: &str) {
+        let Some(p) = o.inputs.first() else {
+            self.report.objects.push((r, Outcome::Ignored));
+            return;
+        };
+        let has_data = p
+            .persistent
+            .as_ref()
+            .is_some_and(|t| !t.branches.is_empty());
+        if p.sources.is_empty() && has_data || !p.modifiers.is_empty() {
+            // Data typed in, or modifiers to apply: a generic parameter node keeps them.
+            if let Some(t) = self.registry.get("params.geometry").cloned()
+                && t.inputs
+                    .first()
+                    .is_some_and(|i| i.data_type == DataType::Generic)
+            {
+                self.component(o, r, &t, prefix);
+                return;
+            }
+        }
+        self.sources
+            .insert(p.instance.clone(), Source::Through(p.sources.clone()));
+        self.report.objects.push((r, Outcome::PassThrough));
+    }
+
+    pub(super) fn widget(&mut self, o: &GhObject, r: ObjectRef, kind: Special, prefix: &str) {
+        let c = &o.container;
+        let fed = o.inputs.first().is_some_and(|p| !p.sources.is_empty());
+        let name = if o.nickname.trim().is_empty() {
+            o.type_name.clone()
+        } else {
+            o.nickname.clone()
+        };
+        if kind == Special::Panel && fed {
+            let sources = o.inputs[0].sources.clone();
+            self.sources.insert(
+                o.outputs[0].instance.clone(),
+                Source::Through(sources.clone()),
+            );
+            self.panels.push((name, sources));
+            self.report.objects.push((r, Outcome::PassThrough));
+            return;
+        }
+        let (node_type, items, note): (&str, Vec<GhItem>, String) = match kind {
+            Special::Slider => {
+                let s = c.chunk("Slider");
+                let get = |n: &str| s.and_then(|s| s.f64(n));
+                let value = get("Value").unwrap_or(0.0);
+                let kind = match s.and_then(|s| s.i64("Interval")) {
+                    Some(1) => "integer",
+                    Some(2) => "even",
+                    Some(3) => "odd",
+                    _ => "float",
+                };
+                let note = format!(
+                    "Number Slider \"{}\": {kind}, {} to {}, {} digits",
+                    o.nickname,
+                    literal::number(get("Min").unwrap_or(0.0)),
+                    literal::number(get("Max").unwrap_or(1.0)),
+                    get("Digits").unwrap_or(0.0)
+                );
+                ("params.number", vec![GhItem::Number(value)], note)
+            }
+            Special::Knob => {
+                let d = c.chunk("DialData");
+                let get = |n: &str| d.and_then(|d| d.f64(n));
+                let note = format!(
+                    "Control Knob \"{}\": {} to {}, {} decimals",
+                    o.nickname,
+                    literal::number(get("Minimum").unwrap_or(0.0)),
+                    literal::number(get("Maximum").unwrap_or(1.0)),
+                    get("Decimals").unwrap_or(0.0)
+                );
+                let value = get("Value").unwrap_or(0.0);
+                ("params.number", vec![GhItem::Number(value)], note)
+            }
+            Special::MdSlider => {
+                // The slider keeps its position as fractions of its x, y and z domains; in
+                // its two-dimensional mode (SliderMode 0) the point lies in the XY plane.
+                let at = |fraction: Option<f64>, domain: &str| {
+                    let [a, b] = match c.item(domain).map(|i| &i.value) {
+                        Some(crate::archive::Value::Interval(d)) => *d,
+                        _ => [0.0, 1.0],
+                    };
+                    a + fraction.unwrap_or(0.0) * (b - a)
+                };
+                let fractions = match c.item("slider_value").map(|i| &i.value) {
+                    Some(crate::archive::Value::Point3(p)) => *p,
+                    _ => [0.0; 3],
+                };
+                let planar = c.i64("SliderMode").unwrap_or(0) == 0;
+                let point = [
+                    at(Some(fractions[0]), "x_domain"),
+                    at(Some(fractions[1]), "y_domain"),
+                    if planar {
+                        0.0
+                    } else {
+                        at(Some(fractions[2]), "z_domain")
+                    },
+                ];
+                let note = format!(
+                    "MD Slider \"{}\": ({}, {}, {})",
+                    o.nickname,
+                    literal::number(point[0]),
+                    literal::number(point[1]),
+                    literal::number(point[2])
+                );
+                ("params.point", vec![GhItem::Point(point)], note)
+            }
+            Special::Panel => {
+                let text = c.str("UserText").unwrap_or_default();
+                let multiline = c
+                    .chunk("PanelProperties")
+                    .and_then(|p| p.bool("Multiline"))
+                    .unwrap_or(true);
+                let items = if text.is_empty() {
+                    Vec::new()
+                } else if multiline {
+                    vec![GhItem::Text(text.to_owned())]
+                } else {
+                    text.lines().map(|l| GhItem::Text(l.to_owned())).collect()
+                };
+                ("params.text", items, format!("Panel \"{}\"", o.nickname))
+            }
+            Special::Toggle => (
+                "params.boolean",
+                vec![GhItem::Boolean(c.bool("ToggleValue").unwrap_or(false))],
+                format!("Boolean Toggle \"{}\"", o.nickname),
+            ),
+            Special::Button => (
+                "params.boolean",
+                vec![GhItem::Boolean(false)],
+                format!("Button \"{}\" (not pressed)", o.nickname),
+            ),
+            _ => {
+                let mut values = Vec::new();
+                let mut numeric = true;
+                for item in c.chunks_named("ListItem") {
+                    if item.bool("Selected") == Some(true) {
+                        let e = item.str("Expression").unwrap_or_default().trim();
+                        match crate::xml::parse_float(e) {
+                            Ok(x) => values.push(GhItem::Number(x)),
+                            Err(_) => {
+                                numeric = false;
+                                values.push(GhItem::Text(e.trim_matches('"').to_owned()));
+                            }
+                        }
+                    }
+                }
+                let node_type = if numeric {
+                    "params.number"
+                } else {
+                    "params.text"
+                };
+                (node_type, values, format!("Value List \"{}\"", o.nickname))
+            }
+        };
+        let Some(t) = self.registry.get(node_type).cloned() else {
+            self.unsupported(o, r, "component", format!("no {node_type} in the registry"));
+            return;
+        };
+        let mut widget = o.clone();
+        if let Some(p) = widget.inputs.first_mut() {
+            p.persistent = (!items.is_empty()).then(|| GhTree {
+                branches: vec![(vec![0], items)],
+            });
+        }
+        if let Some(id) = self.component(&widget, r, &t, prefix) {
+            if let Some(n) = self.notes.iter_mut().find(|(n, _)| *n == id) {
+                n.1 = note;
+            }
+            if !fed {
+                let port = t.inputs[0].nickname.clone();
+                self.inputs.push((name, PortRef { node: id, port }));
+            }
+        }
+    }
+
+    pub(super) fn cluster(&mut self, o: &GhObject, r: ObjectRef, prefix: &str, depth: usize) {
+        if o.outputs.is_empty() {
+            // Nothing downstream can depend on a cluster without outputs (such clusters open
+            // a web page or draw in the canvas): whatever is inside, there is no data to run.
+            self.diag(
+                Level::Remark,
+                "dropped-cluster",
+                format!("{r} is a cluster without outputs, so no data depends on it: dropped"),
+                Some(r.clone()),
+                None,
+                None,
+            );
+            self.report.objects.push((r, Outcome::Dropped));
+            return;
+        }
+        let Some(bytes) = o
+            .container
+            .item("ClusterDocument")
+            .and_then(|i| match &i.value {
+                crate::archive::Value::Bytes(b) => Some(b.clone()),
+                _ => None,
+            })
+        else {
+            self.unsupported(o, r, "cluster", "the cluster has no document".to_owned());
+            return;
+        };
+        let inner = match read_cluster(&bytes, self.limits, depth + 1) {
+            Ok(d) => d,
+            Err(e) => {
+                self.unsupported(o, r, "cluster", format!("its document does not read: {e}"));
+                return;
+            }
+        };
+        let base = slug(if o.nickname.is_empty() {
+            &o.name
+        } else {
+            &o.nickname
+        });
+        let path = self.unique_id(prefix, &base).0;
+        // The cluster's ports are the Cluster Input and Output objects inside, in order.
+        let boundary_in: Vec<&GhObject> = inner
+            .objects
+            .iter()
+            .filter(|x| x.type_guid == CLUSTER_INPUT)
+            .collect();
+        let boundary_out: Vec<&GhObject> = inner
+            .objects
+            .iter()
+            .filter(|x| x.type_guid == CLUSTER_OUTPUT)
+            .collect();
+        if boundary_in.len() != o.inputs.len() || boundary_out.len() != o.outputs.len() {
+            self.unsupported(
+                o,
+                r,
+                "cluster",
+                format!(
+                    "its ports ({} in, {} out) do not match its document ({} in, {} out)",
+                    o.inputs.len(),
+                    o.outputs.len(),
+                    boundary_in.len(),
+                    boundary_out.len()
+                ),
+            );
+            return;
+        }
+        self.report.objects.push((r.clone(), Outcome::PassThrough));
+        // Outer input k feeds the inner Cluster Input k; inner Cluster Output k is outer
+        // output k.
+        for (outer, inner_in) in o.inputs.iter().zip(&boundary_in) {
+            if let Some(p) = inner_in.outputs.first() {
+                self.sources
+                    .insert(p.instance.clone(), Source::Through(outer.sources.clone()));
+            }
+        }
+        for (outer, inner_out) in o.outputs.iter().zip(&boundary_out) {
+            if let Some(p) = inner_out.inputs.first() {
+                self.sources
+                    .insert(outer.instance.clone(), Source::Through(p.sources.clone()));
+            }
+        }
+        let cluster_path = path.clone();
+        let rest = GhDocument {
+            objects: inner
+                .objects
+                .iter()
+                .filter(|x| x.type_guid != CLUSTER_INPUT && x.type_guid != CLUSTER_OUTPUT)
+                .cloned()
+                .collect(),
+            libraries: inner.libraries.clone(),
+            ..GhDocument::default()
+        };
+        let saved = std::mem::replace(&mut self.libraries, rest.libraries.clone());
+        self.objects(&rest, &cluster_path, depth + 1);
+        self.libraries = saved;
+    }
+}

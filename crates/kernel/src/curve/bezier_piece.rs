@@ -1,0 +1,190 @@
+//! The Bézier form of one span of a NURBS curve: the homogeneous control points `(w·P, w)` of
+//! the span's polynomial piece, for bounds (the piece lies in the convex hull of their
+//! projections, for positive weights) and for cheap evaluation of the point and its first two
+//! derivatives by de Casteljau's algorithm (`O(p²)` operations, without basis functions).
+
+use crate::curve::nurbs::basis::MAX_ORDER;
+use crate::{NurbsCurve, Point3, Vector3};
+
+/// One span's polynomial piece in Bézier form on `[a, b]`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BezierPiece {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    degree: usize,
+    /// Homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
+    points: [[f64; 4]; MAX_ORDER],
+}
+
+impl NurbsCurve {
+    /// The Bézier form of the piece of `span` (a Rhino knot index with `knots[span] <
+    /// knots[span + 1]`): control point `j` is the blossom `B(a, …, a, b, …, b)` with `j` copies
+    /// of `b`, computed by de Boor's triangle on the homogeneous control points.
+    pub(crate) fn bezier_piece(&self, span: usize) -> BezierPiece {
+        let degree = self.degree();
+        let first = span + 1 - degree;
+        let knots = &self.knots()[first..first + 2 * degree];
+        let (a, b) = (self.knots()[span], self.knots()[span + 1]);
+        let mut homogeneous = [[0.0; 4]; MAX_ORDER];
+        for (i, h) in homogeneous[..=degree].iter_mut().enumerate() {
+            let (q, w) = (self.points()[first + i], self.weights()[first + i]);
+            *h = [q.x * w, q.y * w, q.z * w, w];
+        }
+        let mut points = [[0.0; 4]; MAX_ORDER];
+        if degree < 4 {
+            blossoms::<4>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
+        } else {
+            blossoms::<MAX_ORDER>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
+        }
+        BezierPiece {
+            a,
+            b,
+            degree,
+            points,
+        }
+    }
+}
+
+/// The Bézier points of one span (see [`NurbsCurve::bezier_piece`]) from its `degree + 1`
+/// homogeneous B-spline control points and its `2·degree` local knots (Rhino form, from the
+/// span's first control point), into `points[..=degree]`, with `N > degree`-sized working
+/// arrays, so that low degrees copy little.
+pub(crate) fn blossoms<const N: usize>(
+    degree: usize,
+    knots: &[f64],
+    [a, b]: [f64; 2],
+    homogeneous: &[[f64; 4]],
+    points: &mut [[f64; 4]],
+) {
+    let mut start = [[0.0; 4]; N];
+    start[..=degree].copy_from_slice(&homogeneous[..=degree]);
+    for (j, out) in points[..=degree].iter_mut().enumerate() {
+        let mut d = start;
+        for r in 1..=degree {
+            let x = if r <= degree - j { a } else { b };
+            for i in (r..=degree).rev() {
+                let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
+                let alpha = (x - k0) / (k1 - k0);
+                let prev = d[i - 1];
+                for (c, &q) in d[i].iter_mut().zip(&prev) {
+                    *c = (1.0 - alpha) * q + alpha * *c;
+                }
+            }
+        }
+        *out = d[degree];
+    }
+}
+
+impl BezierPiece {
+    /// The squared distance from `p` to the axis-aligned box of the projected control points.
+    pub(crate) fn box_distance_squared(&self, p: Point3) -> f64 {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for h in &self.points[..=self.degree] {
+            for c in 0..3 {
+                let v = h[c] / h[3];
+                lo[c] = lo[c].min(v);
+                hi[c] = hi[c].max(v);
+            }
+        }
+        let mut sum = 0.0;
+        for (c, x) in p.to_array().into_iter().enumerate() {
+            let d = (lo[c] - x).max(x - hi[c]).max(0.0);
+            sum += d * d;
+        }
+        sum
+    }
+
+    /// The point (as a vector) and the first and second derivatives at `t`.
+    pub(crate) fn derivatives(&self, t: f64) -> [Vector3; 3] {
+        if self.degree < 4 {
+            self.derivatives_with::<4>(t)
+        } else {
+            self.derivatives_with::<MAX_ORDER>(t)
+        }
+    }
+
+    /// [`BezierPiece::derivatives`] with an `N > degree`-sized working copy of the points.
+    fn derivatives_with<const N: usize>(&self, t: f64) -> [Vector3; 3] {
+        let p = self.degree;
+        let h = self.b - self.a;
+        let s = (t - self.a) / h;
+        let lerp = |x: [f64; 4], y: [f64; 4]| {
+            [
+                x[0] + s * (y[0] - x[0]),
+                x[1] + s * (y[1] - x[1]),
+                x[2] + s * (y[2] - x[2]),
+                x[3] + s * (y[3] - x[3]),
+            ]
+        };
+        let mut q = [[0.0; 4]; N];
+        q[..=p].copy_from_slice(&self.points[..=p]);
+        // Down to three points (two for a line), keeping the last levels for the derivatives.
+        for level in 1..=p.saturating_sub(2) {
+            for i in 0..=p - level {
+                q[i] = lerp(q[i], q[i + 1]);
+            }
+        }
+        let (second, r0, r1) = if p >= 2 {
+            let k = (p * (p - 1)) as f64 / (h * h);
+            let second: [f64; 4] = std::array::from_fn(|c| k * (q[0][c] - 2.0 * q[1][c] + q[2][c]));
+            (second, lerp(q[0], q[1]), lerp(q[1], q[2]))
+        } else {
+            ([0.0; 4], q[0], q[1])
+        };
+        let k = p as f64 / h;
+        let first: [f64; 4] = std::array::from_fn(|c| k * (r1[c] - r0[c]));
+        let point = lerp(r0, r1);
+        // The quotient rule for C = A / w.
+        let w = point[3];
+        let c0 = Vector3::new(point[0], point[1], point[2]) / w;
+        let a1 = Vector3::new(first[0], first[1], first[2]);
+        let a2 = Vector3::new(second[0], second[1], second[2]);
+        let c1 = (a1 - c0 * first[3]) / w;
+        let c2 = (a2 - c1 * (2.0 * first[3]) - c0 * second[3]) / w;
+        [c0, c1, c2]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn curve(degree: usize) -> NurbsCurve {
+        let n = 8;
+        let points = (0..n)
+            .map(|i| Point3::new(i as f64, (i * i % 5) as f64, (i % 2) as f64))
+            .collect();
+        let weights = vec![1.0, 2.0, 0.5, 1.0, 1.5, 0.7, 1.0, 1.2];
+        let mut knots = vec![0.0; degree];
+        let interior = n - degree - 1;
+        knots.extend((1..=interior).map(|k| (k * k) as f64 * 0.3));
+        knots.extend(vec![(interior * interior) as f64 * 0.3 + 1.0; degree]);
+        NurbsCurve::new(degree, points, weights, knots).unwrap()
+    }
+
+    #[test]
+    fn the_piece_evaluates_as_the_curve_and_bounds_it() {
+        for degree in 1..=5 {
+            let c = curve(degree);
+            for span in c.span_indices() {
+                let piece = c.bezier_piece(span);
+                for k in 0..=16 {
+                    let t = piece.a + (piece.b - piece.a) * k as f64 / 16.0;
+                    let mut d = [Vector3::ZERO; 3];
+                    c.derivatives_in_span(span, t, &mut d);
+                    let e = piece.derivatives(t);
+                    for (x, y) in d.iter().zip(&e) {
+                        assert!(
+                            (*x - *y).length() <= 1e-11 * (1.0 + x.length()),
+                            "{x:?} {y:?}"
+                        );
+                    }
+                    assert!(piece.box_distance_squared(c.point_at(t)) <= 1e-26);
+                }
+                let beside = c.point_at(piece.a) + Vector3::new(0.0, 0.0, 50.0);
+                assert!(piece.box_distance_squared(beside) > 1.0);
+            }
+        }
+    }
+}
