@@ -107,7 +107,7 @@ fn the_checks_catch_a_bad_declaration() {
 fn vector_transform_and_geometry_params_ids_are_registered() {
     use locus_nodes::params::geometry;
     use locus_nodes::transform::{affine, euclidean, util};
-    use locus_nodes::vector::{plane, point, products, pull, vectors};
+    use locus_nodes::vector::{grid, plane, point, products, pull, vectors};
     let registry = registry();
     let ids = [
         geometry::POINT,
@@ -141,6 +141,9 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
         plane::DECONSTRUCT_PLANE,
         plane::PLANE_COEFFICIENTS,
         plane::PLANE_CLOSEST_POINT,
+        grid::SQUARE,
+        grid::RECTANGULAR,
+        grid::HEXAGONAL,
         euclidean::MOVE,
         euclidean::ROTATE,
         euclidean::ROTATE_AXIS,

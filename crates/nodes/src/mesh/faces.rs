@@ -78,8 +78,8 @@ pub fn mesh_closest_point() -> NodeType {
              on, and its mesh parameter: the text face[t0,t1,t2,t3], the weights of the \
              face's four corners (a triangle's fourth is 0), which sum to 1 (locus has no \
              Mesh Point value yet). Every face is tested. A mesh without faces is an error. \
-             (Its Grasshopper GUID is not in the project's table, so files cannot name it \
-             yet.)",
+             Its Grasshopper GUID is not in the project's table, so files cannot name it \
+             yet.",
     )
     .input(Port::new("Point", "P", DataType::Point).doc("The point to search from."))
     .input(Port::new("Mesh", "M", DataType::Mesh).doc("The mesh to search."))

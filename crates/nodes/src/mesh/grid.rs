@@ -133,8 +133,8 @@ pub fn mesh_box() -> NodeType {
             "Creates a mesh box: each of the six sides a grid of quads (X × Y on the bottom \
              and top, X × Z on the front and back, Y × Z on the left and right), facing out. \
              Each side has its own vertices and normals, so the edges stay sharp, as in \
-             Rhino's Mesh.CreateFromBox; Weld Mesh joins them into a closed mesh. (Its \
-             Grasshopper GUID is not in the project's table, so files cannot name it yet.)",
+             Rhino's Mesh.CreateFromBox; Weld Mesh joins them into a closed mesh. Its \
+             Grasshopper GUID is not in the project's table, so files cannot name it yet.",
         )
         .input(Port::new("Base", "B", DataType::Box).doc("The box to mesh."))
         .input(count_port(

@@ -90,9 +90,9 @@ pub fn settings_custom() -> NodeType {
             "Represents custom meshing settings for Mesh Brep: the largest angle between the \
              normals of neighbouring vertices, the largest distance from a face to the \
              surface, and the longest and shortest edges (0 for no limit). At least one of \
-             the first three must limit the mesh. (Its Grasshopper GUID is not in the \
+             the first three must limit the mesh. Its Grasshopper GUID is not in the \
              project's table, so files cannot name it yet; Grasshopper's other knobs, such as \
-             jagged seams and simple planes, are not used by locus's tessellation.)",
+             jagged seams and simple planes, are not used by locus's tessellation.",
         )
         .input(
             Port::new("Max Angle", "A", DataType::Number)
@@ -134,7 +134,7 @@ pub fn settings_speed() -> NodeType {
         .description(
             "Represents meshing settings for speed: the coarsest density preset, a maximum \
              angle of 20° between neighbouring normals (in the spirit of Rhino's \
-             FastRenderMesh). (Its Grasshopper GUID is not in the project's table.)",
+             FastRenderMesh). Its Grasshopper GUID is not in the project's table.",
         )
         .output(settings_output())
         .solve(|s| {
@@ -152,7 +152,7 @@ pub fn settings_quality() -> NodeType {
         .description(
             "Represents meshing settings for quality: the finest density preset, a maximum \
              angle of 1° between neighbouring normals (in the spirit of Rhino's \
-             QualityRenderMesh). (Its Grasshopper GUID is not in the project's table.)",
+             QualityRenderMesh). Its Grasshopper GUID is not in the project's table.",
         )
         .output(settings_output())
         .solve(|s| {

@@ -64,8 +64,8 @@ pub fn unweld_mesh() -> NodeType {
             "Unwelds the edges of a mesh whose two faces' normals differ by more than the \
              angle: each vertex is split into one vertex per fan of faces around it joined \
              across gentler edges, so that sharp edges shade as creases. Vertex colours are \
-             kept and vertex normals, when the mesh has them, computed again. (Its \
-             Grasshopper GUID is not in the project's table, so files cannot name it yet.)",
+             kept and vertex normals, when the mesh has them, computed again. Its \
+             Grasshopper GUID is not in the project's table, so files cannot name it yet.",
         )
         .input(Port::new("Mesh", "M", DataType::Mesh).doc("The mesh to unweld."))
         .input(
