@@ -27,12 +27,18 @@ fn hand_checked_definitions_pass_locus_test() {
 
 #[test]
 fn import_report_and_json_check() {
-    let file = "crates/ghx/tests/data/runxel__attractor_2_linear.ghx";
+    // The attractor tutorial runs whole (its hexagonal grid and MD Sliders map); the McNeel
+    // sample still holds a GhPython script and components locus lacks.
+    let whole = "crates/ghx/tests/data/runxel__attractor_2_linear.ghx";
+    let (code, out, _) = locus(&["import", whole, "--report"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("runs whole: yes"), "{out}");
+    assert!(out.contains("graph: checks"), "{out}");
+    let file = "crates/ghx/tests/data/mcneel-samples__BranchNodeRnd.ghx";
     let (code, out, _) = locus(&["import", file, "--report"]);
     assert_eq!(code, 0);
     assert!(out.contains("objects: "), "{out}");
     assert!(out.contains("runs whole: no"), "{out}");
-    assert!(out.contains("graph: checks"), "{out}");
     let (_, out, _) = locus(&["check", "--format", "json", file]);
     let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
     let unsupported = v
@@ -40,7 +46,7 @@ fn import_report_and_json_check() {
         .unwrap()
         .iter()
         .find(|d| d["code"] == "unsupported-cluster" || d["code"] == "unsupported-script")
-        .expect("the tutorial's script cluster is reported");
+        .expect("the sample's script is reported");
     assert_eq!(unsupported["severity"], "error");
     assert!(
         unsupported["gh_instance"]
