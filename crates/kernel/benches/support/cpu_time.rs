@@ -1,7 +1,7 @@
 //! CPU time of the benchmarking thread as a criterion measurement (read from
 //! `/proc/thread-self/schedstat`, wall-clock time where the platform does not report it): on a
 //! shared machine it measures the code itself, where wall-clock time also counts the time other
-//! processes hold the core. The same measurement as in `curve_eval.rs`.
+//! processes hold the core. Used by `curve_eval.rs` and `queries.rs`.
 
 use std::time::Instant;
 
