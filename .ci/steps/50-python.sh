@@ -27,5 +27,7 @@ rm -rf target/python-wheels
 wheel=$(ls target/python-wheels/locus-*-cp39-abi3-*.whl)
 "$py" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps "$wheel"
 
-cd python
-"$py" -m pytest -q -p no:cacheprovider tests
+# From inside tests/: `python -m pytest` puts the working folder on sys.path, and from python/
+# the source package (without its compiled _locus) would shadow the installed wheel.
+cd python/tests
+"$py" -m pytest -q -p no:cacheprovider .

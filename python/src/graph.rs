@@ -15,6 +15,16 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use crate::convert::{tree_from_py, tree_to_dict, tree_to_numpy, tree_to_py};
 use crate::errors::{InputError, PyDiagnostic, PyMessage, graph_error, graph_error_message};
 
+/// The runtime's thread count for the Python setting: 0 is one thread per core (the runtime
+/// itself takes only counts of at least 1).
+fn thread_count(threads: usize) -> usize {
+    if threads == 0 {
+        std::thread::available_parallelism().map_or(1, usize::from)
+    } else {
+        threads
+    }
+}
+
 /// The node library, registered once per process.
 pub(crate) fn registry() -> &'static NodeRegistry {
     static REGISTRY: OnceLock<NodeRegistry> = OnceLock::new();
@@ -311,7 +321,7 @@ impl PyGraph {
     #[setter]
     fn set_threads(&mut self, threads: usize) -> PyResult<()> {
         self.evaluator
-            .set_threads(threads)
+            .set_threads(thread_count(threads))
             .map_err(|e| PyValueError::new_err(e.to_string()))?;
         self.threads = threads;
         Ok(())
@@ -438,7 +448,7 @@ impl PyGraph {
     fn copy(&self) -> PyResult<Self> {
         let mut evaluator = Evaluator::new(self.evaluator.plan().clone());
         evaluator
-            .set_threads(self.threads)
+            .set_threads(thread_count(self.threads))
             .map_err(|e| PyValueError::new_err(e.to_string()))?;
         for (name, tree) in &self.set_inputs {
             evaluator

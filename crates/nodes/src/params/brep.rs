@@ -148,6 +148,7 @@ pub fn is_geometry(value: &Value) -> bool {
             | Value::Curve(_)
             | Value::Surface(_)
             | Value::Brep(_)
+            | Value::Mesh(_)
     )
 }
 
@@ -158,8 +159,8 @@ pub fn geometry() -> NodeType {
         .subcategory("Geometry")
         .description(&format!(
             "{} Any geometry passes unchanged, keeping its own type: points, vectors, planes, \
-             boxes, lines, circles, arcs, curves, surfaces and B-reps. Numbers, integers, \
-             booleans, text, domains and transforms are not geometry: they are errors and \
+             boxes, lines, circles, arcs, curves, surfaces, B-reps and meshes. Numbers, \
+             integers, booleans, text, domains, transforms and colours are not geometry: they are errors and \
              become null.",
             container_description("geometry of any kind")
         ))
