@@ -193,3 +193,44 @@ fn the_tidy_test_sees_an_upward_dependency() {
     assert_eq!(layer_of("geometry", &layers).map(|l| l.0), Some(1));
     assert_eq!(layer_of("surface", &layers), None);
 }
+
+/// ARCHITECTURE.md's code map names every module folder of every crate (as `name/` or
+/// `` `name` ``), so that a new folder cannot appear without its place on the map.
+#[test]
+fn code_map_names_every_module_folder() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let doc = fs::read_to_string(root.join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
+    let mut missing = Vec::new();
+    let mut folders = Vec::new();
+    for krate in fs::read_dir(root.join("crates")).unwrap() {
+        let src = krate.unwrap().path().join("src");
+        if src.is_dir() {
+            module_folders(&src, &mut folders);
+        }
+    }
+    assert!(
+        !folders.is_empty(),
+        "no module folders found under crates/*/src"
+    );
+    for folder in folders {
+        let name = folder.file_name().unwrap().to_string_lossy().into_owned();
+        if !doc.contains(&format!("{name}/")) && !doc.contains(&format!("`{name}`")) {
+            missing.push(folder.display().to_string());
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "ARCHITECTURE.md's code map does not name these module folders: {missing:?}"
+    );
+}
+
+/// Every folder under `dir`, recursively.
+fn module_folders(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            out.push(path.clone());
+            module_folders(&path, out);
+        }
+    }
+}
