@@ -21,6 +21,7 @@ pub mod plane;
 pub mod plane_edit;
 pub mod point;
 pub mod point_sets;
+pub mod populate;
 pub mod products;
 pub mod pull;
 pub mod vectors;
@@ -38,6 +39,7 @@ pub fn register(registry: &mut NodeRegistry) {
     grid::register(registry);
     plane_edit::register(registry);
     point_sets::register(registry);
+    populate::register(registry);
 }
 
 /// `x`, or an error saying that `what` is not a finite number.
