@@ -232,16 +232,20 @@ mod tests {
             let q = Point3::new(random(), random() * 2.0, random() * 0.5);
             assert_eq!(grid.nearest_squared(q), brute_nearest(&held, q));
         }
-        assert_eq!(grid.nearest_squared(Point3::new(1.0, 2.0, 0.5)), brute_nearest(&held, Point3::new(1.0, 2.0, 0.5)));
+        assert_eq!(
+            grid.nearest_squared(Point3::new(1.0, 2.0, 0.5)),
+            brute_nearest(&held, Point3::new(1.0, 2.0, 0.5))
+        );
     }
 
     #[test]
     fn samples_stay_inside_and_spread_out() {
         let pts = best_candidate_samples([2.0, 1.0, 0.0], 200, &[], lcg(1));
         assert_eq!(pts.len(), 200);
-        assert!(pts.iter().all(|p| (0.0..2.0).contains(&p.x)
-            && (0.0..1.0).contains(&p.y)
-            && p.z == 0.0));
+        assert!(
+            pts.iter()
+                .all(|p| (0.0..2.0).contains(&p.x) && (0.0..1.0).contains(&p.y) && p.z == 0.0)
+        );
         // Uniform random points of this density come as close as about 1e-3; best-candidate
         // points keep a good part of the mean spacing (0.1) between them.
         let min = (0..pts.len())
@@ -260,6 +264,9 @@ mod tests {
         let c = best_candidate_samples([1.0, 1.0, 0.0], 5, &existing, lcg(3));
         assert!(c.iter().all(|p| p.distance(existing[0]) > 0.1));
         assert!(best_candidate_samples([f64::NAN, 1.0, 0.0], 5, &[], lcg(3)).is_empty());
-        assert_eq!(best_candidate_samples([0.0, 0.0, 0.0], 2, &[], lcg(3)).len(), 2);
+        assert_eq!(
+            best_candidate_samples([0.0, 0.0, 0.0], 2, &[], lcg(3)).len(),
+            2
+        );
     }
 }

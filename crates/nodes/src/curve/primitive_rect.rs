@@ -33,7 +33,11 @@ fn outputs(node: NodeType) -> NodeType {
 }
 
 /// The closed polyline `a, a + u, a + u + v, a + v, a`.
-fn closed(a: Point3, u: locus_kernel::Vector3, v: locus_kernel::Vector3) -> Result<Polyline, NodeError> {
+fn closed(
+    a: Point3,
+    u: locus_kernel::Vector3,
+    v: locus_kernel::Vector3,
+) -> Result<Polyline, NodeError> {
     Ok(Polyline::new(vec![a, a + u, a + u + v, a + v, a])?)
 }
 

@@ -23,8 +23,9 @@ pub fn mesh_colours() -> NodeType {
              an empty list is an error.",
         )
         .input(
-            Port::new("Mesh", "M", DataType::Mesh)
-                .doc("The mesh. B-reps, surfaces and boxes are meshed with the default parameters."),
+            Port::new("Mesh", "M", DataType::Mesh).doc(
+                "The mesh. B-reps, surfaces and boxes are meshed with the default parameters.",
+            ),
         )
         .input(
             Port::new("Colours", "C", DataType::Colour)
@@ -81,9 +82,6 @@ mod tests {
             .input(DataTree::from_list(Vec::<Color>::new()))
             .run();
         // An empty list is no data: the node leaves its output empty, or reports why.
-        assert!(
-            r.outputs[0].values().all(|v| v.is_none())
-                || !r.messages.is_empty()
-        );
+        assert!(r.outputs[0].values().all(|v| v.is_none()) || !r.messages.is_empty());
     }
 }

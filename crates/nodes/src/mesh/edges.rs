@@ -28,8 +28,9 @@ pub fn mesh_edges() -> NodeType {
              count as one.",
         )
         .input(
-            Port::new("Mesh", "M", DataType::Mesh)
-                .doc("The mesh. B-reps, surfaces and boxes are meshed with the default parameters."),
+            Port::new("Mesh", "M", DataType::Mesh).doc(
+                "The mesh. B-reps, surfaces and boxes are meshed with the default parameters.",
+            ),
         )
         .output(
             Port::new("Naked Edges", "E1", DataType::Line)
@@ -72,7 +73,14 @@ mod tests {
     fn a_two_quad_strip_has_six_naked_edges_and_one_interior() {
         let p = |x: f64, y: f64| Point3::new(x, y, 0.0);
         let mesh = Mesh::new(
-            vec![p(0.0, 0.0), p(1.0, 0.0), p(2.0, 0.0), p(0.0, 1.0), p(1.0, 1.0), p(2.0, 1.0)],
+            vec![
+                p(0.0, 0.0),
+                p(1.0, 0.0),
+                p(2.0, 0.0),
+                p(0.0, 1.0),
+                p(1.0, 1.0),
+                p(2.0, 1.0),
+            ],
             vec![MeshFace::quad(0, 1, 4, 3), MeshFace::quad(1, 2, 5, 4)],
         )
         .unwrap();

@@ -36,8 +36,9 @@ pub fn box_corners() -> NodeType {
     for (k, at) in docs.iter().enumerate() {
         let letter = char::from(b'A' + k as u8).to_string();
         node = node.output(
-            Port::new(&format!("Corner {letter}"), &letter, DataType::Point)
-                .doc(&format!("The corner at {at} in the box's plane coordinates.")),
+            Port::new(&format!("Corner {letter}"), &letter, DataType::Point).doc(&format!(
+                "The corner at {at} in the box's plane coordinates."
+            )),
         );
     }
     node.solve(|s| {

@@ -199,8 +199,18 @@ pub fn rectangular_array() -> NodeType {
                 "The array cell, a rectangle: its first side is the step along X, its second \
                  the step along Y.",
             ))
-            .input(count_port("X Count", "X", "copies along the cell's first side", 5))
-            .input(count_port("Y Count", "Y", "copies along the cell's second side", 5)),
+            .input(count_port(
+                "X Count",
+                "X",
+                "copies along the cell's first side",
+                5,
+            ))
+            .input(count_port(
+                "Y Count",
+                "Y",
+                "copies along the cell's second side",
+                5,
+            )),
     )
     .solve(|s| {
         let (a, b) = rectangle_sides(s.item::<Shared<Curve>>(1)?)?;
@@ -273,7 +283,11 @@ fn box_edges(b: &OrientedBox) -> Result<[Vector3; 3], NodeError> {
         return Err("cell C is not a valid box".into());
     }
     let [sx, sy, sz] = b.sizes();
-    let edges = [b.plane.x_axis * sx, b.plane.y_axis * sy, b.plane.z_axis * sz];
+    let edges = [
+        b.plane.x_axis * sx,
+        b.plane.y_axis * sy,
+        b.plane.z_axis * sz,
+    ];
     if edges.iter().any(|e| !e.is_finite()) {
         return Err("cell C has a size that is not finite".into());
     }
@@ -290,12 +304,28 @@ pub fn box_array() -> NodeType {
                  i, j and k times the cell box's edges along its plane's x, y and z axes. The \
                  copies run over k, then j, then i.",
             )
-            .input(Port::new("Cell", "C", DataType::Box).doc(
-                "The array cell, a box: its sizes along its plane's axes are the steps.",
+            .input(
+                Port::new("Cell", "C", DataType::Box)
+                    .doc("The array cell, a box: its sizes along its plane's axes are the steps."),
+            )
+            .input(count_port(
+                "X Count",
+                "X",
+                "copies along the box's x axis",
+                5,
             ))
-            .input(count_port("X Count", "X", "copies along the box's x axis", 5))
-            .input(count_port("Y Count", "Y", "copies along the box's y axis", 5))
-            .input(count_port("Z Count", "Z", "copies along the box's z axis", 5)),
+            .input(count_port(
+                "Y Count",
+                "Y",
+                "copies along the box's y axis",
+                5,
+            ))
+            .input(count_port(
+                "Z Count",
+                "Z",
+                "copies along the box's z axis",
+                5,
+            )),
     )
     .solve(|s| {
         let [ex, ey, ez] = box_edges(s.item::<OrientedBox>(1)?)?;
@@ -347,7 +377,10 @@ mod tests {
     #[test]
     fn linear_array_copies_each_item_into_its_own_branch() {
         let r = NodeCall::new(&linear_array())
-            .input(DataTree::from_list(vec![p(0.0, 0.0, 0.0), p(0.0, 5.0, 0.0)]))
+            .input(DataTree::from_list(vec![
+                p(0.0, 0.0, 0.0),
+                p(0.0, 5.0, 0.0),
+            ]))
             .input(DataTree::from_item(Vector3::new(2.0, 0.0, 1.0)))
             .input(DataTree::from_item(3_i64))
             .run();

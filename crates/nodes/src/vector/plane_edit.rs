@@ -112,9 +112,7 @@ pub fn flip_plane() -> NodeType {
 pub fn plane_origin() -> NodeType {
     plane_node(PLANE_ORIGIN, "Plane Origin", "Pl Origin")
         .gh_guid("75eec078-a905-47a1-b0d2-0934182b1e3d")
-        .description(
-            "Changes the origin of a plane: the same axes through the new origin point.",
-        )
+        .description("Changes the origin of a plane: the same axes through the new origin point.")
         .input(Port::new("Base", "B", DataType::Plane).doc("The plane whose axes are kept."))
         .input(Port::new("Origin", "O", DataType::Point).doc("The new origin."))
         .output(Port::new("Plane", "Pl", DataType::Plane).doc("The plane through the new origin."))
@@ -150,9 +148,11 @@ pub fn align_plane() -> NodeType {
             let d = finite_vector(*d, "direction D")?;
             let (u, v) = (d.dot(plane.x_axis), d.dot(plane.y_axis));
             if u.hypot(v) <= ALIGN_TOLERANCE * d.length() || d.length() == 0.0 {
-                return Err("direction D is along the plane's normal (or zero) and has no \
+                return Err(
+                    "direction D is along the plane's normal (or zero) and has no \
                             direction in the plane"
-                    .into());
+                        .into(),
+                );
             }
             let angle = v.atan2(u);
             Ok((rotated_about_normal(&plane, angle), angle))
@@ -213,13 +213,28 @@ mod tests {
             only::<Plane>(&r, 0)
         };
         let p = run(false, false, false);
-        assert_eq!(p, Plane { origin: Point3::new(1.0, 2.0, 3.0), ..Plane::WORLD_XY });
+        assert_eq!(
+            p,
+            Plane {
+                origin: Point3::new(1.0, 2.0, 3.0),
+                ..Plane::WORLD_XY
+            }
+        );
         let p = run(true, false, false);
-        assert_eq!((p.x_axis, p.y_axis, p.z_axis), (-Vector3::X, Vector3::Y, -Vector3::Z));
+        assert_eq!(
+            (p.x_axis, p.y_axis, p.z_axis),
+            (-Vector3::X, Vector3::Y, -Vector3::Z)
+        );
         let p = run(false, false, true);
-        assert_eq!((p.x_axis, p.y_axis, p.z_axis), (Vector3::Y, Vector3::X, -Vector3::Z));
+        assert_eq!(
+            (p.x_axis, p.y_axis, p.z_axis),
+            (Vector3::Y, Vector3::X, -Vector3::Z)
+        );
         let p = run(true, true, true);
-        assert_eq!((p.x_axis, p.y_axis, p.z_axis), (-Vector3::Y, -Vector3::X, -Vector3::Z));
+        assert_eq!(
+            (p.x_axis, p.y_axis, p.z_axis),
+            (-Vector3::Y, -Vector3::X, -Vector3::Z)
+        );
     }
 
     #[test]

@@ -117,7 +117,9 @@ pub fn closest_point() -> NodeType {
                 .list()
                 .doc("The cloud of points to search."),
         )
-        .output(Port::new("Closest Point", "P", DataType::Point).doc("The point of C closest to P."))
+        .output(
+            Port::new("Closest Point", "P", DataType::Point).doc("The point of C closest to P."),
+        )
         .output(Port::new("CP Index", "i", DataType::Integer).doc("Its index in the cloud."))
         .output(Port::new("Distance", "D", DataType::Number).doc("Its distance from P."))
         .solve(|s| {
@@ -190,9 +192,11 @@ pub fn duplicate_groups(points: &[Point3], tolerance: f64) -> Vec<Vec<usize>> {
                         let Some(members) = grid.get(&key) else {
                             continue;
                         };
-                        found.extend(members.iter().copied().filter(|&j| {
-                            !taken[j] && points[j].distance(points[i]) <= tolerance
-                        }));
+                        found.extend(
+                            members.iter().copied().filter(|&j| {
+                                !taken[j] && points[j].distance(points[i]) <= tolerance
+                            }),
+                        );
                     }
                 }
             }
@@ -342,7 +346,8 @@ mod tests {
 
     #[test]
     fn closest_point_takes_the_first_of_equals() {
-        let cloud = DataTree::from_list(vec![p(5.0, 0.0, 0.0), p(0.0, 3.0, 0.0), p(-3.0, 0.0, 0.0)]);
+        let cloud =
+            DataTree::from_list(vec![p(5.0, 0.0, 0.0), p(0.0, 3.0, 0.0), p(-3.0, 0.0, 0.0)]);
         let r = NodeCall::new(&closest_point())
             .input(DataTree::from_item(Point3::ORIGIN))
             .input(cloud)
@@ -405,10 +410,20 @@ mod tests {
 
     #[test]
     fn cull_duplicates_rejects_bad_tolerances_and_modes() {
-        assert_error(&cull("average", sample(), -1.0), "tolerance T must be 0 or more");
-        assert_error(&cull("average", sample(), f64::NAN), "tolerance T is not a finite");
+        assert_error(
+            &cull("average", sample(), -1.0),
+            "tolerance T must be 0 or more",
+        );
+        assert_error(
+            &cull("average", sample(), f64::NAN),
+            "tolerance T is not a finite",
+        );
         assert_error(&cull("merge", sample(), 0.1), "setting mode is \"merge\"");
-        let r = cull("average", vec![p(f64::NAN, 0.0, 0.0), p(f64::NAN, 0.0, 0.0)], 0.1);
+        let r = cull(
+            "average",
+            vec![p(f64::NAN, 0.0, 0.0), p(f64::NAN, 0.0, 0.0)],
+            0.1,
+        );
         assert_eq!(integers(&r.outputs[2]), [1, 1]);
     }
 }

@@ -167,8 +167,14 @@ mod tests {
 
     fn rectangle(w: f64, h: f64) -> DataTree {
         let p = |x: f64, y: f64| Point3::new(x + 1.0, y, 2.0);
-        let poly = Polyline::new(vec![p(0.0, 0.0), p(w, 0.0), p(w, h), p(0.0, h), p(0.0, 0.0)])
-            .unwrap();
+        let poly = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(w, 0.0),
+            p(w, h),
+            p(0.0, h),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         DataTree::from_item(Shared::new(Curve::from(poly)))
     }
 
