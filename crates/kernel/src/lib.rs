@@ -57,6 +57,7 @@ pub use crate::curve::nurbs::basis;
 pub use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
 pub use crate::curve::polyline::Polyline;
 pub use crate::error::{Error, Result};
+pub use crate::geometry::best_candidate::{BEST_CANDIDATES, best_candidate_samples};
 pub use crate::geometry::bounding_box::BoundingBox;
 pub use crate::geometry::interval::Interval;
 pub use crate::geometry::oriented_box::OrientedBox;
@@ -69,7 +70,9 @@ pub use crate::mesh::parameters::{
     DEFAULT_MESH_MAX_EDGE_LENGTH, DEFAULT_MESH_MIN_EDGE_LENGTH, FINEST_MESH_ANGLE,
     MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters,
 };
-pub use crate::mesh::{Color, GRID_COINCIDENT_DISTANCE, Mesh, MeshFace, MeshPoint, WELD_DISTANCE};
+pub use crate::mesh::{
+    Color, GRID_COINCIDENT_DISTANCE, Mesh, MeshEdge, MeshFace, MeshPoint, WELD_DISTANCE,
+};
 pub use crate::surface::NurbsSurface;
 pub use crate::surface::closest_point::SurfaceClosestPoint;
 pub use crate::surface::curvature::SurfaceCurvature;

@@ -1,7 +1,9 @@
 //! Every Curve node and the Curve parameter are registered under their ids, and the Curve
 //! category holds no node that is not listed here.
 
-use locus_nodes::curve::{analysis, division, primitive, primitive_more, spline, util};
+use locus_nodes::curve::{
+    analysis, division, primitive, primitive_more, primitive_rect, spline, util,
+};
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
 
@@ -41,6 +43,8 @@ fn curve_ids_are_registered() {
         primitive_more::POLYGON,
         primitive_more::RECTANGLE,
         primitive_more::CURVE_MIDDLE,
+        primitive_rect::RECTANGLE_2PT,
+        primitive_rect::RECTANGLE_3PT,
     ];
     for id in ids {
         let t = registry

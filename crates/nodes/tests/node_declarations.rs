@@ -106,8 +106,10 @@ fn the_checks_catch_a_bad_declaration() {
 #[test]
 fn vector_transform_and_geometry_params_ids_are_registered() {
     use locus_nodes::params::geometry;
-    use locus_nodes::transform::{affine, euclidean, util};
-    use locus_nodes::vector::{grid, plane, point, products, pull, vectors};
+    use locus_nodes::transform::{affine, array, euclidean, util};
+    use locus_nodes::vector::{
+        grid, plane, plane_edit, point, point_sets, populate, products, pull, vectors,
+    };
     let registry = registry();
     let ids = [
         geometry::POINT,
@@ -159,6 +161,19 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
         util::INVERSE_TRANSFORM,
         util::DECONSTRUCT_TRANSFORM,
         util::CONSTRUCT_TRANSFORM,
+        array::LINEAR_ARRAY,
+        array::RECTANGULAR_ARRAY,
+        array::POLAR_ARRAY,
+        array::BOX_ARRAY,
+        plane_edit::FLIP_PLANE,
+        plane_edit::PLANE_ORIGIN,
+        plane_edit::ALIGN_PLANE,
+        plane_edit::ROTATE_PLANE,
+        point_sets::POINT_POLAR,
+        point_sets::CLOSEST_POINT,
+        point_sets::CULL_DUPLICATES,
+        populate::POPULATE_2D,
+        populate::POPULATE_3D,
     ];
     for id in ids {
         assert!(registry.get(id).is_some(), "{id} is not registered");

@@ -1,6 +1,7 @@
 //! The elements every other module builds on: points and vectors, planes, intervals, axis-aligned
 //! and oriented boxes, and the named tolerances.
 
+pub(crate) mod best_candidate;
 pub(crate) mod bounding_box;
 pub(crate) mod interval;
 pub(crate) mod oriented_box;

@@ -6,6 +6,7 @@
 //! and from Rhino's without copying face by face.
 
 mod closest;
+mod edges;
 mod grid;
 mod measure;
 pub(crate) mod parameters;
@@ -17,6 +18,7 @@ mod weld;
 use std::collections::HashMap;
 
 pub use closest::MeshPoint;
+pub use edges::MeshEdge;
 pub use grid::GRID_COINCIDENT_DISTANCE;
 pub use weld::WELD_DISTANCE;
 

@@ -1,14 +1,16 @@
 //! Grasshopper's Mesh category: turning B-reps into meshes and mesh primitives
 //! ([`primitive`], with meshing [`settings`]), meshes from and to their parts ([`construct`]),
 //! grids of quads on planes, boxes and surfaces ([`grid`]), measuring meshes ([`analysis`],
-//! [`faces`]) and editing them ([`util`]).
+//! [`faces`], [`edges`]), colouring them ([`colours`]) and editing them ([`util`]).
 //!
 //! Meshes are the kernel's [`locus_kernel::Mesh`]: triangles and quads with optional vertex
 //! normals and colours. B-reps, surfaces and boxes wired into a Mesh port are meshed with the
 //! kernel's default [`locus_kernel::MeshingParameters`], as Grasshopper meshes them.
 
 pub mod analysis;
+pub mod colours;
 pub mod construct;
+pub mod edges;
 pub mod faces;
 pub mod grid;
 pub mod primitive;
@@ -28,6 +30,8 @@ pub fn register(registry: &mut NodeRegistry) {
     faces::register(registry);
     util::register(registry);
     settings::register(registry);
+    edges::register(registry);
+    colours::register(registry);
 }
 
 /// A node of the Mesh category.

@@ -4,6 +4,7 @@
 
 pub mod analysis;
 pub mod bounding_box;
+pub mod box_corners;
 pub mod box_nodes;
 pub mod brep;
 pub mod brep_analysis;
@@ -23,4 +24,5 @@ pub fn register(registry: &mut NodeRegistry) {
     bounding_box::register(registry);
     brep::register(registry);
     brep_analysis::register(registry);
+    box_corners::register(registry);
 }

@@ -12,6 +12,7 @@
 //! | surface | the control points transformed (exact for every affine and projective map) |
 //! | box | a box when the image is still a box (see below), else a six-face B-rep |
 //! | B-rep | every surface, curve and vertex transformed; a mirror keeps faces pointing outwards |
+//! | mesh | vertices transformed, normals by the inverse transpose; a mirror reverses the faces |
 //!
 //! A box stays a box under every transform that maps its three edge directions to mutually
 //! perpendicular directions: rigid motions, mirrors, uniform scales, non-uniform scales and
@@ -71,6 +72,7 @@ pub fn transform_value(value: &Value, xform: &Transform) -> Result<Value, NodeEr
         Value::Surface(s) => Value::Surface(Shared::new(s.transformed(xform)?)),
         Value::Box(b) => transform_box(b, xform)?,
         Value::Brep(b) => Value::Brep(Shared::new(b.transformed(xform)?)),
+        Value::Mesh(m) => Value::Mesh(Shared::new(m.transformed(xform)?)),
         other => {
             return Err(NodeError(format!(
                 "cannot transform a {}: it is not geometry",

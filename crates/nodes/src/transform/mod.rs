@@ -13,6 +13,7 @@
 
 pub mod affine;
 pub mod apply;
+pub mod array;
 pub mod euclidean;
 pub mod util;
 
@@ -27,6 +28,7 @@ pub fn register(registry: &mut NodeRegistry) {
     euclidean::register(registry);
     affine::register(registry);
     util::register(registry);
+    array::register(registry);
 }
 
 /// A node of the Transform category.

@@ -18,7 +18,10 @@
 
 pub mod grid;
 pub mod plane;
+pub mod plane_edit;
 pub mod point;
+pub mod point_sets;
+pub mod populate;
 pub mod products;
 pub mod pull;
 pub mod vectors;
@@ -34,6 +37,9 @@ pub fn register(registry: &mut NodeRegistry) {
     products::register(registry);
     plane::register(registry);
     grid::register(registry);
+    plane_edit::register(registry);
+    point_sets::register(registry);
+    populate::register(registry);
 }
 
 /// `x`, or an error saying that `what` is not a finite number.
