@@ -31,6 +31,7 @@ pub mod list_match;
 pub mod list_split;
 pub mod random;
 pub mod sequence;
+pub mod set_ops;
 pub mod streams;
 pub mod text;
 pub mod tree;
@@ -50,6 +51,7 @@ pub fn register(registry: &mut NodeRegistry) {
     random::register(registry);
     text::register(registry);
     tree_edit::register(registry);
+    set_ops::register(registry);
 }
 
 /// Reads a path written `{0;1}` (or `0;1`), naming the port in the error.
