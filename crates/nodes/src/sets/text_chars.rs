@@ -223,8 +223,9 @@ mod tests {
 
     #[test]
     fn text_fragment_clips_and_rejects_negative_numbers() {
+        let node = text_fragment();
         let frag = |start: i64, count: Option<i64>| {
-            let mut call = NodeCall::new(&text_fragment())
+            let mut call = NodeCall::new(&node)
                 .input(text("Grasshopper"))
                 .input(DataTree::from_item(start));
             if let Some(n) = count {
