@@ -565,26 +565,56 @@ mod tests {
 
     #[test]
     fn powers_and_roots() {
-        assert_eq!(numbers(&run(&square(), vec![3.0, -1.5]).outputs[0]), [9.0, 2.25]);
-        assert_eq!(numbers(&run(&square_root(), vec![16.0, 2.0]).outputs[0]), [4.0, 2_f64.sqrt()]);
-        assert_eq!(numbers(&run(&cube(), vec![2.0, -3.0]).outputs[0]), [8.0, -27.0]);
-        assert_eq!(numbers(&run(&cube_root(), vec![27.0, -8.0]).outputs[0]), [3.0, -2.0]);
-        assert_eq!(numbers(&run(&power_of_2(), vec![10.0, -1.0]).outputs[0]), [1024.0, 0.5]);
-        assert_eq!(numbers(&run(&power_of_10(), vec![3.0]).outputs[0]), [1000.0]);
-        assert_eq!(numbers(&run(&power_of_e(), vec![0.0, 1.0]).outputs[0]), [1.0, std::f64::consts::E]);
+        assert_eq!(
+            numbers(&run(&square(), vec![3.0, -1.5]).outputs[0]),
+            [9.0, 2.25]
+        );
+        assert_eq!(
+            numbers(&run(&square_root(), vec![16.0, 2.0]).outputs[0]),
+            [4.0, 2_f64.sqrt()]
+        );
+        assert_eq!(
+            numbers(&run(&cube(), vec![2.0, -3.0]).outputs[0]),
+            [8.0, -27.0]
+        );
+        assert_eq!(
+            numbers(&run(&cube_root(), vec![27.0, -8.0]).outputs[0]),
+            [3.0, -2.0]
+        );
+        assert_eq!(
+            numbers(&run(&power_of_2(), vec![10.0, -1.0]).outputs[0]),
+            [1024.0, 0.5]
+        );
+        assert_eq!(
+            numbers(&run(&power_of_10(), vec![3.0]).outputs[0]),
+            [1000.0]
+        );
+        assert_eq!(
+            numbers(&run(&power_of_e(), vec![0.0, 1.0]).outputs[0]),
+            [1.0, std::f64::consts::E]
+        );
     }
 
     #[test]
     fn logarithms() {
-        assert_eq!(numbers(&run(&logarithm(), vec![1000.0, 1.0]).outputs[0]), [3.0, 0.0]);
-        assert_eq!(numbers(&run(&natural_logarithm(), vec![std::f64::consts::E]).outputs[0]), [1.0]);
+        assert_eq!(
+            numbers(&run(&logarithm(), vec![1000.0, 1.0]).outputs[0]),
+            [3.0, 0.0]
+        );
+        assert_eq!(
+            numbers(&run(&natural_logarithm(), vec![std::f64::consts::E]).outputs[0]),
+            [1.0]
+        );
         let r = NodeCall::new(&log_n())
             .input(DataTree::from_list(vec![8.0, 81.0]))
             .input(DataTree::from_list(vec![2.0, 3.0]))
             .run();
         assert_clean(&r);
         let y = numbers(&r.outputs[0]);
-        assert!((y[0] - 3.0).abs() < 1e-15 && (y[1] - 4.0).abs() < 1e-15, "{y:?}");
+        assert!(
+            (y[0] - 3.0).abs() < 1e-15 && (y[1] - 4.0).abs() < 1e-15,
+            "{y:?}"
+        );
     }
 
     #[test]
@@ -597,8 +627,21 @@ mod tests {
         assert_eq!(w.len(), 1);
         assert!(w[0].contains("the square root of -4"), "{w:?}");
         assert_eq!(r.messages[0].index, Some(0));
-        for node in [logarithm(), natural_logarithm(), arc_sine(), arc_cosine(), cosecant()] {
-            let r = run(&node, vec![if node.id == ARC_SINE || node.id == ARC_COSINE { 2.0 } else { 0.0 }]);
+        for node in [
+            logarithm(),
+            natural_logarithm(),
+            arc_sine(),
+            arc_cosine(),
+            cosecant(),
+        ] {
+            let r = run(
+                &node,
+                vec![if node.id == ARC_SINE || node.id == ARC_COSINE {
+                    2.0
+                } else {
+                    0.0
+                }],
+            );
             assert!(numbers(&r.outputs[0])[0].is_nan(), "{}", node.id);
             assert_eq!(messages(&r, Level::Warning).len(), 1, "{}", node.id);
         }
@@ -614,9 +657,15 @@ mod tests {
         assert_eq!(c, [1.0, -1.0]);
         let t = numbers(&run(&tangent(), vec![FRAC_PI_4]).outputs[0]);
         assert!((t[0] - 1.0).abs() < 1e-15);
-        assert_eq!(numbers(&run(&arc_sine(), vec![1.0]).outputs[0]), [FRAC_PI_2]);
+        assert_eq!(
+            numbers(&run(&arc_sine(), vec![1.0]).outputs[0]),
+            [FRAC_PI_2]
+        );
         assert_eq!(numbers(&run(&arc_cosine(), vec![-1.0]).outputs[0]), [PI]);
-        assert_eq!(numbers(&run(&arc_tangent(), vec![1.0]).outputs[0]), [FRAC_PI_4]);
+        assert_eq!(
+            numbers(&run(&arc_tangent(), vec![1.0]).outputs[0]),
+            [FRAC_PI_4]
+        );
         assert_eq!(numbers(&run(&secant(), vec![0.0]).outputs[0]), [1.0]);
         let csc = numbers(&run(&cosecant(), vec![FRAC_PI_2]).outputs[0]);
         assert_eq!(csc, [1.0]);

@@ -52,15 +52,14 @@ pub fn replace_nulls() -> NodeType {
                 .list()
                 .doc("The list without gaps."),
         )
-        .output(
-            Port::new("Count", "N", DataType::Integer).doc("The number of items replaced."),
-        )
+        .output(Port::new("Count", "N", DataType::Integer).doc("The number of items replaced."))
         .solve(|s| {
             let (items, pool) = (list_of(s, 0), list_of(s, 1));
             let mut out = Branch::new(items.data_type());
             let mut replaced = 0_usize;
             for i in 0..items.len() {
-                let gap = items.is_null(i) || items.value(i).is_some_and(|v| invalid_reason(&v).is_some());
+                let gap = items.is_null(i)
+                    || items.value(i).is_some_and(|v| invalid_reason(&v).is_some());
                 if !gap {
                     out.extend_range(&items, i..i + 1);
                     continue;
@@ -136,7 +135,9 @@ mod tests {
         assert_eq!(all::<f64>(&r.outputs[0]), [1.0, 10.0, 3.0, 20.0, 20.0]);
         assert_eq!(all::<i64>(&r.outputs[1]), [3]);
         // Nothing to replace: the list passes, with or without R.
-        let r = NodeCall::new(&replace_nulls()).input(tree("{0}:[1, 2]")).run();
+        let r = NodeCall::new(&replace_nulls())
+            .input(tree("{0}:[1, 2]"))
+            .run();
         assert_eq!(all::<f64>(&r.outputs[0]), [1.0, 2.0]);
         assert_eq!(all::<i64>(&r.outputs[1]), [0]);
     }

@@ -25,8 +25,8 @@ pub const DELETE_CONSECUTIVE: &str = "sets.delete_consecutive";
 /// Id of [`key_value_search`].
 pub const KEY_VALUE_SEARCH: &str = "sets.key_value_search";
 
-/// The largest edit-distance table (characters of one text times characters of the other)
-/// Find similar member computes for one pair of items.
+/// The most edit-distance cells (characters of one text times characters of the other,
+/// summed over the members compared) Find similar member computes for one item of D.
 pub const MAX_EDIT_CELLS: usize = 100_000_000;
 
 /// Registers the member nodes.
@@ -70,9 +70,7 @@ pub fn member_index() -> NodeType {
                 .list()
                 .doc("The indices of the items equal to M."),
         )
-        .output(
-            Port::new("Count", "N", DataType::Integer).doc("The number of occurrences of M."),
-        )
+        .output(Port::new("Count", "N", DataType::Integer).doc("The number of occurrences of M."))
         .solve(|s| {
             let set = list_of(s, 0);
             let member = s
@@ -106,8 +104,19 @@ pub fn replace_members() -> NodeType {
         )
         .input(set_port("Set", "S", "The set to operate on, of any type."))
         .input(set_port("Find", "F", "The members to replace."))
-        .input(set_port("Replace", "R", "The members to replace them with; optional.").optional())
-        .output(set_port("Result", "R", "The set with the members replaced."))
+        .input(
+            set_port(
+                "Replace",
+                "R",
+                "The members to replace them with; optional.",
+            )
+            .optional(),
+        )
+        .output(set_port(
+            "Result",
+            "R",
+            "The set with the members replaced.",
+        ))
         .solve(|s| {
             let (set, find, replace) = (list_of(s, 0), list_of(s, 1), list_of(s, 2));
             if !replace.is_empty() && replace.len() != find.len() {
@@ -137,18 +146,21 @@ pub fn replace_members() -> NodeType {
         })
 }
 
-/// The Levenshtein distance of two texts, in characters; `Err` when the table is too large.
-pub(crate) fn edit_distance(a: &str, b: &str) -> Result<usize, NodeError> {
+/// The Levenshtein distance of two texts, in characters, its table taken from `budget`
+/// cells; `Err` when the budget does not hold the table.
+pub(crate) fn edit_distance(a: &str, b: &str, budget: &mut usize) -> Result<usize, NodeError> {
     let a: Vec<char> = a.chars().collect();
     let b: Vec<char> = b.chars().collect();
-    if a.len().saturating_mul(b.len()) > MAX_EDIT_CELLS {
+    let cells = a.len().saturating_mul(b.len());
+    if cells > *budget {
         return Err(NodeError(format!(
-            "texts of {} and {} characters are too long to compare (more than {MAX_EDIT_CELLS} \
-             cells)",
+            "texts of {} and {} characters are too long to compare: the comparisons would take \
+             more than {MAX_EDIT_CELLS} cells",
             a.len(),
             b.len()
         )));
     }
+    *budget -= cells;
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.iter().enumerate() {
         let mut diagonal = row[0];
@@ -167,7 +179,7 @@ pub(crate) fn edit_distance(a: &str, b: &str) -> Result<usize, NodeError> {
 }
 
 /// How far apart two items are for Find similar member (smaller is more similar).
-fn dissimilarity(a: &Value, b: &Value) -> Result<f64, NodeError> {
+fn dissimilarity(a: &Value, b: &Value, budget: &mut usize) -> Result<f64, NodeError> {
     let number = |v: &Value| match v {
         Value::Number(x) => Some(*x),
         Value::Integer(i) => Some(*i as f64),
@@ -181,7 +193,7 @@ fn dissimilarity(a: &Value, b: &Value) -> Result<f64, NodeError> {
         let d = p.distance(*q);
         return Ok(if d.is_nan() { f64::INFINITY } else { d });
     }
-    Ok(edit_distance(&format_value(a), &format_value(b))? as f64)
+    Ok(edit_distance(&format_value(a), &format_value(b), budget)? as f64)
 }
 
 /// Find similar member \[FSim\]: the member of a set closest to some data.
@@ -204,9 +216,10 @@ pub fn find_similar_member() -> NodeType {
                 .ok_or_else(|| NodeError("input D has no data".to_owned()))?;
             let set = list_of(s, 1);
             let mut best: Option<(f64, usize)> = None;
+            let mut budget = MAX_EDIT_CELLS;
             for (i, v) in set.values().enumerate() {
                 let Some(v) = v else { continue };
-                let d = dissimilarity(&data, &v)?;
+                let d = dissimilarity(&data, &v, &mut budget)?;
                 if best.is_none_or(|(b, _)| d < b) {
                     best = Some((d, i));
                 }
@@ -242,7 +255,11 @@ pub fn delete_consecutive() -> NodeType {
                 .doc("Whether the last and first members are adjacent; default false.")
                 .default_value(false),
         )
-        .output(set_port("Set", "S", "The set without consecutive equal members."))
+        .output(set_port(
+            "Set",
+            "S",
+            "The set without consecutive equal members.",
+        ))
         .output(Port::new("Count", "N", DataType::Integer).doc("The number of items removed."))
         .solve(|s| {
             let set = list_of(s, 0);
@@ -277,10 +294,7 @@ pub fn key_value_search() -> NodeType {
         .input(set_port("Keys", "K", "The keys, of any type."))
         .input(set_port("Values", "V", "The values, one for each key."))
         .input(Port::new("Search", "S", DataType::Generic).doc("The key to search for."))
-        .output(
-            Port::new("Result", "R", DataType::Generic)
-                .doc("The value whose key matches S."),
-        )
+        .output(Port::new("Result", "R", DataType::Generic).doc("The value whose key matches S."))
         .solve(|s| {
             let (keys_list, values) = (list_of(s, 0), list_of(s, 1));
             if keys_list.len() != values.len() {
@@ -362,15 +376,22 @@ mod tests {
             .input(tree("{0}:[9]"))
             .run();
         let e = messages(&r, Level::Error);
-        assert!(e.len() == 1 && e[0].contains("F has 2 items but R has 1"), "{e:?}");
+        assert!(
+            e.len() == 1 && e[0].contains("F has 2 items but R has 1"),
+            "{e:?}"
+        );
     }
 
     #[test]
     fn edit_distance_is_levenshteins() {
-        assert_eq!(edit_distance("kitten", "sitting").unwrap(), 3);
-        assert_eq!(edit_distance("", "abc").unwrap(), 3);
-        assert_eq!(edit_distance("flaw", "lawn").unwrap(), 2);
-        assert_eq!(edit_distance("ÄÖ", "AÖ").unwrap(), 1);
+        let mut budget = MAX_EDIT_CELLS;
+        assert_eq!(edit_distance("kitten", "sitting", &mut budget).unwrap(), 3);
+        assert_eq!(edit_distance("", "abc", &mut budget).unwrap(), 3);
+        assert_eq!(edit_distance("flaw", "lawn", &mut budget).unwrap(), 2);
+        assert_eq!(edit_distance("ÄÖ", "AÖ", &mut budget).unwrap(), 1);
+        assert_eq!(budget, MAX_EDIT_CELLS - 42 - 16 - 4);
+        let mut small = 10;
+        assert!(edit_distance("abcd", "abcd", &mut small).is_err());
     }
 
     #[test]

@@ -120,7 +120,10 @@ impl Keys {
     }
 
     /// The keys of a branch's items, `None` for nulls.
-    pub(crate) fn of_branch(&mut self, branch: &Branch) -> Result<Vec<Option<MemberKey>>, NodeError> {
+    pub(crate) fn of_branch(
+        &mut self,
+        branch: &Branch,
+    ) -> Result<Vec<Option<MemberKey>>, NodeError> {
         branch
             .values()
             .map(|v| v.map(|v| self.key(&v)).transpose())
@@ -194,7 +197,11 @@ pub fn create_set() -> NodeType {
              is null.",
         )
         .input(set_port("List", "L", "The list of items, of any type."))
-        .output(set_port("Set", "S", "The distinct members of L, in order of appearance."))
+        .output(set_port(
+            "Set",
+            "S",
+            "The distinct members of L, in order of appearance.",
+        ))
         .output(
             Port::new("Map", "M", DataType::Integer)
                 .list()
@@ -360,18 +367,19 @@ pub fn set_majority() -> NodeType {
             );
             let (in_b, in_c) = (key_set(&kb), key_set(&kc));
             let mut seen = std::collections::HashSet::new();
-            let mut pick = |ks: &[Option<MemberKey>], other: &std::collections::HashSet<&MemberKey>| {
-                let mut out = Vec::new();
-                for (i, k) in ks.iter().enumerate() {
-                    if let Some(k) = k
-                        && other.contains(k)
-                        && seen.insert(k.clone())
-                    {
-                        out.push(i);
+            let mut pick =
+                |ks: &[Option<MemberKey>], other: &std::collections::HashSet<&MemberKey>| {
+                    let mut out = Vec::new();
+                    for (i, k) in ks.iter().enumerate() {
+                        if let Some(k) = k
+                            && other.contains(k)
+                            && seen.insert(k.clone())
+                        {
+                            out.push(i);
+                        }
                     }
-                }
-                out
-            };
+                    out
+                };
             let ab = a.gather(pick(&ka, &in_b).into_iter().map(Some));
             let bc = b.gather(pick(&kb, &in_c).into_iter().map(Some));
             let ac = a.gather(pick(&ka, &in_c).into_iter().map(Some));
@@ -458,7 +466,16 @@ mod tests {
         );
         assert_eq!(
             items::<i64>(&r.outputs[1]),
-            [Some(0), Some(1), Some(2), Some(0), None, Some(1), Some(2), Some(3)]
+            [
+                Some(0),
+                Some(1),
+                Some(2),
+                Some(0),
+                None,
+                Some(1),
+                Some(2),
+                Some(3)
+            ]
         );
         // A typed list stays typed.
         let r = NodeCall::new(&create_set())
@@ -509,7 +526,11 @@ mod tests {
     #[test]
     fn mixed_types_are_distinct_members_but_numbers_meet_integers() {
         let mut b = Branch::new(DataType::Generic);
-        for v in [Value::Integer(1), Value::Number(2.0), Value::Text("true".into())] {
+        for v in [
+            Value::Integer(1),
+            Value::Number(2.0),
+            Value::Text("true".into()),
+        ] {
             b.push_value(v);
         }
         let r = run2(

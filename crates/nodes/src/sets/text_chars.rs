@@ -55,7 +55,12 @@ pub fn characters() -> NodeType {
         .solve(|s| {
             let t = s.item::<String>(0)?;
             s.set_list(0, t.chars().map(String::from).collect::<Vec<_>>());
-            s.set_list(1, t.chars().map(|c| i64::from(u32::from(c))).collect::<Vec<_>>());
+            s.set_list(
+                1,
+                t.chars()
+                    .map(|c| i64::from(u32::from(c)))
+                    .collect::<Vec<_>>(),
+            );
             Ok(())
         })
 }
@@ -237,8 +242,14 @@ mod tests {
         assert_eq!(all::<String>(&frag(0, Some(5)).outputs[0]), ["Grass"]);
         assert_eq!(all::<String>(&frag(8, Some(10)).outputs[0]), ["per"]);
         assert_eq!(all::<String>(&frag(20, None).outputs[0]), [""]);
-        assert_eq!(messages(&frag(-1, None), Level::Error), ["start -1 is negative"]);
-        assert_eq!(messages(&frag(0, Some(-2)), Level::Error), ["count -2 is negative"]);
+        assert_eq!(
+            messages(&frag(-1, None), Level::Error),
+            ["start -1 is negative"]
+        );
+        assert_eq!(
+            messages(&frag(0, Some(-2)), Level::Error),
+            ["count -2 is negative"]
+        );
     }
 
     #[test]
@@ -275,7 +286,10 @@ mod tests {
             all::<String>(&r.outputs[0]),
             ["pt_a", "pt_b", "pt_aa", "pt_ab", "pt_ba", "pt_bb", "pt_aaa"]
         );
-        assert_eq!(tag(26 * 26 + 26, &DEFAULT_CHAR_POOL.chars().collect::<Vec<_>>()), "ZZ");
+        assert_eq!(
+            tag(26 * 26 + 26, &DEFAULT_CHAR_POOL.chars().collect::<Vec<_>>()),
+            "ZZ"
+        );
     }
 
     #[test]

@@ -6,7 +6,9 @@
 
 use std::collections::HashMap;
 
-use locus_runtime::{Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, TreePath, Value};
+use locus_runtime::{
+    Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, TreePath, Value,
+};
 
 use super::tree::{tree_node, tree_port};
 use super::tree_edit::PathMask;
@@ -128,7 +130,11 @@ pub fn relative_item() -> NodeType {
              with Wrap Paths each path offset cycles through the indices the tree has there, \
              with Wrap Items item indices wrap around the partner branch.",
         )
-        .input(tree_port("Tree", "T", "The tree to operate on, of any type."))
+        .input(tree_port(
+            "Tree",
+            "T",
+            "The tree to operate on, of any type.",
+        ))
         .input(
             Port::new("Offset", "O", DataType::Text)
                 .doc("The relative offset, such as {+1}[0] or {0;0;+1}[-1]; default {0}[+1].")
@@ -166,7 +172,9 @@ pub fn relative_item() -> NodeType {
                 let n = i64::try_from(partner.len()).unwrap_or(i64::MAX);
                 let (mut ia, mut ib) = (Vec::new(), Vec::new());
                 for k in 0..branch.len() {
-                    let Some(p) = i64::try_from(k).ok().and_then(|k| k.checked_add(offset.item))
+                    let Some(p) = i64::try_from(k)
+                        .ok()
+                        .and_then(|k| k.checked_add(offset.item))
                     else {
                         continue;
                     };
@@ -200,7 +208,11 @@ pub fn unflatten_tree() -> NodeType {
              that cannot be filled and those after it are left out, with a warning; items left \
              over are dropped, with a warning.",
         )
-        .input(tree_port("Tree", "T", "The tree to unflatten, of any type."))
+        .input(tree_port(
+            "Tree",
+            "T",
+            "The tree to unflatten, of any type.",
+        ))
         .input(tree_port(
             "Guide",
             "G",
@@ -279,7 +291,8 @@ pub fn replace_paths() -> NodeType {
             };
             let mut rules = Vec::with_capacity(search.len());
             for k in 0..search.len() {
-                let mask = PathMask::parse(&text(search.value(k), "mask", k)?).map_err(NodeError)?;
+                let mask =
+                    PathMask::parse(&text(search.value(k), "mask", k)?).map_err(NodeError)?;
                 let path = parse_path(&text(replace.value(k), "path", k)?, "R")?;
                 rules.push((mask, path));
             }
@@ -311,9 +324,21 @@ mod tests {
     #[test]
     fn offsets_read_signed_path_and_item_offsets() {
         let o = RelativeOffset::parse("{0;0;+1}[ -1]").unwrap();
-        assert_eq!(o, RelativeOffset { path: vec![0, 0, 1], item: -1 });
+        assert_eq!(
+            o,
+            RelativeOffset {
+                path: vec![0, 0, 1],
+                item: -1
+            }
+        );
         let o = RelativeOffset::parse(" {+2} ").unwrap();
-        assert_eq!(o, RelativeOffset { path: vec![2], item: 0 });
+        assert_eq!(
+            o,
+            RelativeOffset {
+                path: vec![2],
+                item: 0
+            }
+        );
         for bad in ["", "[1]", "{a}", "{1}[x]", "{1}(1)", "{1"] {
             assert!(RelativeOffset::parse(bad).is_err(), "{bad}");
         }
@@ -344,8 +369,14 @@ mod tests {
             .input(DataTree::from_item(true))
             .input(DataTree::from_item(true))
             .run();
-        assert_eq!(r.outputs[0], tree("{0}:[1, 2, 3] {1}:[10, 20, 30] {2}:[100, 200]"));
-        assert_eq!(r.outputs[1], tree("{0}:[20, 30, 10] {1}:[200, 100, 200] {2}:[2, 3]"));
+        assert_eq!(
+            r.outputs[0],
+            tree("{0}:[1, 2, 3] {1}:[10, 20, 30] {2}:[100, 200]")
+        );
+        assert_eq!(
+            r.outputs[1],
+            tree("{0}:[20, 30, 10] {1}:[200, 100, 200] {2}:[2, 3]")
+        );
     }
 
     #[test]
@@ -356,8 +387,14 @@ mod tests {
             .input(text("{0;-1}"))
             .input(DataTree::from_item(true))
             .run();
-        assert_eq!(r.outputs[0], tree("{0;0}:[1] {0;1}:[2] {1;0}:[3] {1;5}:[4]"));
-        assert_eq!(r.outputs[1], tree("{0;0}:[2] {0;1}:[1] {1;0}:[4] {1;5}:[3]"));
+        assert_eq!(
+            r.outputs[0],
+            tree("{0;0}:[1] {0;1}:[2] {1;0}:[3] {1;5}:[4]")
+        );
+        assert_eq!(
+            r.outputs[1],
+            tree("{0;0}:[2] {0;1}:[1] {1;0}:[4] {1;5}:[3]")
+        );
     }
 
     #[test]
@@ -402,7 +439,10 @@ mod tests {
         assert_eq!(r.outputs[0], tree("{1;0}:[3] {7}:[1, 2]"));
         let r = NodeCall::new(&replace_paths())
             .input(tree("{0}:[1]"))
-            .input(DataTree::from_list(vec!["{0}".to_owned(), "{1}".to_owned()]))
+            .input(DataTree::from_list(vec![
+                "{0}".to_owned(),
+                "{1}".to_owned(),
+            ]))
             .input(DataTree::from_list(vec!["{2}".to_owned()]))
             .run();
         assert_eq!(messages(&r, Level::Error).len(), 1);
