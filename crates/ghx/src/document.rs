@@ -321,8 +321,13 @@ fn read_item(chunk: &Chunk) -> GhItem {
     if chunk.chunk("ON_Data").is_some() || chunk.item("ON_Data").is_some() {
         return GhItem::Other("ON_Data".to_owned());
     }
-    // Generic data carries a `TypeName` item beside the value.
-    let Some(item) = chunk.items.iter().find(|i| i.name != "TypeName") else {
+    // Generic data carries a `TypeName` item beside the value; a text carries a `null_string`
+    // flag before it.
+    let Some(item) = chunk
+        .items
+        .iter()
+        .find(|i| i.name != "TypeName" && i.name != "null_string")
+    else {
         return GhItem::Other(
             chunk
                 .chunks

@@ -1,5 +1,6 @@
-//! Maths: arithmetic and logic operators, domains, number sequences and formulas
-//! (Grasshopper's Maths tab, plus Range and Series from Sets › Sequence).
+//! Maths: arithmetic and logic operators, domains, number sequences, formulas and functions of
+//! one number ([`functions`]: powers, roots, logarithms, trigonometry, Golden Ratio, Epsilon,
+//! Extremes) (Grasshopper's Maths tab, plus Range and Series from Sets › Sequence).
 //!
 //! Numeric results that are not finite (division by zero, `sqrt` of a negative number,
 //! overflow) are written as NaN with a warning, and the item is kept so that lists stay
@@ -8,6 +9,7 @@
 pub mod boolean;
 pub mod comparison;
 pub mod domain;
+pub mod functions;
 pub mod mass;
 pub mod operators;
 pub mod script;
@@ -28,6 +30,7 @@ pub fn register(registry: &mut NodeRegistry) {
     script::register(registry);
     mass::register(registry);
     util::register(registry);
+    functions::register(registry);
 }
 
 /// The warning for an invalid numeric result, `why` saying what produced it.

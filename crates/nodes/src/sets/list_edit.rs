@@ -605,7 +605,7 @@ pub fn cross_reference() -> NodeType {
 }
 
 /// Why a value is invalid, if it is.
-fn invalid_reason(v: &Value) -> Option<String> {
+pub(crate) fn invalid_reason(v: &Value) -> Option<String> {
     let bad = |what: &str| Some(what.to_owned());
     match v {
         Value::Number(x) if !x.is_finite() => bad(&format!("the number {x} is not finite")),

@@ -10,8 +10,13 @@
 //!   Pick'n'Choose, Weave, Sift Pattern, Cross Reference, Null Item; Stream Filter, Stream Gate,
 //!   Clean Tree, Split Tree, Match Tree.
 //! - Random ([`random`]): Random, Jitter, Random Reduce, Fibonacci.
-//! - Text ([`text`]): Concatenate, Text Split, Text Join, Text Length, Replace Text, Text Case,
-//!   Match Text, Format.
+//! - Text ([`text`], [`text_chars`]): Concatenate, Text Split, Text Join, Text Length, Replace
+//!   Text, Text Case, Match Text, Format; Characters, Text Fragment, Text Trim, Char Sequence.
+//! - Sets ([`set_ops`], [`set_members`]): Create Set, Set Union, Set Intersection, Set
+//!   Difference, Set Difference (S), Set Majority, Disjoint, SubSet; Member Index, Replace
+//!   Members, Find similar member, Delete Consecutive, Key/Value Search.
+//! - Gaps and restructuring ([`list_nulls`], [`tree_restructure`]): Replace Nulls, Combine
+//!   Data; Relative Item, Unflatten Tree, Replace Paths.
 //!
 //! List nodes take generic data and keep it typed: items move between branches with
 //! [`Branch::gather`](locus_runtime::Branch::gather) and typed range copies, never one boxed
@@ -28,13 +33,18 @@
 pub mod list;
 pub mod list_edit;
 pub mod list_match;
+pub mod list_nulls;
 pub mod list_split;
 pub mod random;
 pub mod sequence;
+pub mod set_members;
+pub mod set_ops;
 pub mod streams;
 pub mod text;
+pub mod text_chars;
 pub mod tree;
 pub mod tree_edit;
+pub mod tree_restructure;
 
 use locus_runtime::{NodeError, NodeRegistry, TreePath};
 
@@ -50,6 +60,11 @@ pub fn register(registry: &mut NodeRegistry) {
     random::register(registry);
     text::register(registry);
     tree_edit::register(registry);
+    set_ops::register(registry);
+    set_members::register(registry);
+    list_nulls::register(registry);
+    tree_restructure::register(registry);
+    text_chars::register(registry);
 }
 
 /// Reads a path written `{0;1}` (or `0;1`), naming the port in the error.
