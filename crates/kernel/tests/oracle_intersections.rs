@@ -71,11 +71,16 @@ fn line_plane_cases() {
     let mut failures = Failures::default();
     for case in cases("line_plane") {
         let id = case["id"].as_str().unwrap();
-        let (l, p) = (line(&case["inputs"]["line"]), plane(&case["inputs"]["plane"]));
+        let (l, p) = (
+            line(&case["inputs"]["line"]),
+            plane(&case["inputs"]["plane"]),
+        );
         let e = &case["expected"];
         let got = line_plane(&l, &p);
         if e["parallel"].as_bool().unwrap() {
-            failures.check(got.is_none(), || format!("{id}: {got:?}, expected parallel"));
+            failures.check(got.is_none(), || {
+                format!("{id}: {got:?}, expected parallel")
+            });
             continue;
         }
         let want = num(&e["t"]);
@@ -115,7 +120,9 @@ fn plane_plane_cases() {
         }
         let got = plane_plane(&a, &b);
         if e["parallel"].as_bool().unwrap() {
-            failures.check(got.is_none(), || format!("{id}: {got:?}, expected parallel"));
+            failures.check(got.is_none(), || {
+                format!("{id}: {got:?}, expected parallel")
+            });
             continue;
         }
         let Some(l) = got else {
@@ -132,8 +139,8 @@ fn plane_plane_cases() {
         failures.check(sine <= num(&tol["direction_sine"]).max(rounding), || {
             format!("{id}: direction {direction:?}, expected ±{want:?} (sine {sine:e})")
         });
-        let distance = Line::from_direction(l.from, direction)
-            .closest_parameter_unbounded(point(&e["point"]));
+        let distance =
+            Line::from_direction(l.from, direction).closest_parameter_unbounded(point(&e["point"]));
         let off = (l.from + direction * distance).distance(point(&e["point"]));
         failures.check(off <= num(&tol["point_distance"]), || {
             format!("{id}: the expected point is {off:e} from the line")
@@ -191,7 +198,10 @@ fn check_events(
         // tangential and not crossing; the kernel reports whether the sign changes.
         if let Some(crossing) = w["crossing"].as_bool().filter(|_| !tangential) {
             failures.check(hit.tangential == !crossing, || {
-                format!("{id} t = {t}: crossing is {}, expected {crossing}", !hit.tangential)
+                format!(
+                    "{id} t = {t}: crossing is {}, expected {crossing}",
+                    !hit.tangential
+                )
             });
         }
     }
@@ -246,13 +256,11 @@ fn curve_line_cases() {
         };
         // The segment's own events: points whose line parameter is in [0, 1] (within the
         // tolerance), and no overlaps beyond it.
-        let on_segment = |p: Point3| {
-            segment.point_at(segment.closest_parameter(p)).distance(p) <= tolerance
-        };
+        let on_segment =
+            |p: Point3| segment.point_at(segment.closest_parameter(p)).distance(p) <= tolerance;
         got.points.retain(|h| on_segment(h.point));
-        got.overlaps.retain(|o| {
-            on_segment(a.point_at(o.t0)) || on_segment(a.point_at(o.t1))
-        });
+        got.overlaps
+            .retain(|o| on_segment(a.point_at(o.t0)) || on_segment(a.point_at(o.t1)));
         if !case["expected"]["overlaps"].as_array().unwrap().is_empty() {
             // Overlap ends clipped to the segment are the general curve | curve search's.
             continue;

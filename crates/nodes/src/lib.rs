@@ -103,7 +103,8 @@
 //! **Intersect** ([`intersect`])
 //! - Mathematical ([`intersect::mathematical`]): Line | Line \[LLX\], Line | Plane \[PLX\],
 //!   Plane | Plane \[PPX\], Plane | Plane | Plane \[3PX\], Curve | Plane \[PCX\],
-//!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`].
+//!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
+//!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
 //!
 //! # Performance
 //!

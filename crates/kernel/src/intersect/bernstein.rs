@@ -129,7 +129,11 @@ fn monotone(part: &Part, len: usize, tolerance: f64, out: &mut Vec<Root>) {
         return;
     }
     let (d0, d1) = (f0 / part.w[0], f1 / part.w[len - 1]);
-    let (u, d) = if d0.abs() <= d1.abs() { (0.0, d0) } else { (1.0, d1) };
+    let (u, d) = if d0.abs() <= d1.abs() {
+        (0.0, d0)
+    } else {
+        (1.0, d1)
+    };
     if d.abs() <= tolerance {
         out.push(Root {
             s: local(u),

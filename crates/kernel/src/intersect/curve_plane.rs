@@ -83,9 +83,8 @@ impl Curve {
             Plane::from_normal(line.from, second)?,
         ];
         let found = planes.map(|p| nurbs_plane(&nurbs, &p, tolerance));
-        let overlap_length = |r: &CurveIntersections| -> f64 {
-            r.overlaps.iter().map(|o| o.t1 - o.t0).sum()
-        };
+        let overlap_length =
+            |r: &CurveIntersections| -> f64 { r.overlaps.iter().map(|o| o.t1 - o.t0).sum() };
         let lead = usize::from(overlap_length(&found[1]) < overlap_length(&found[0]));
         let other = 1 - lead;
         let near_other = |p: Point3| planes[other].signed_distance_to(p).abs() <= tolerance;
@@ -346,7 +345,12 @@ mod tests {
         assert_eq!(touch.points.len(), 1, "{touch:?}");
         assert!(touch.points[0].tangential);
         assert!(touch.points[0].point.distance(p(0.0, 0.0, 2.0)) < 1e-6);
-        assert!(c.intersect_plane(&xy_at(2.001), 1e-9).unwrap().points.is_empty());
+        assert!(
+            c.intersect_plane(&xy_at(2.001), 1e-9)
+                .unwrap()
+                .points
+                .is_empty()
+        );
         let flat = c
             .intersect_plane(
                 &Plane::from_normal(p(0.0, 0.0, 0.0), Vector3::new(0.0, 1.0, 0.0)).unwrap(),

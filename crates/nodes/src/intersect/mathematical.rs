@@ -331,8 +331,14 @@ mod tests {
     #[test]
     fn line_line_gives_the_crossing() {
         let r = NodeCall::new(&line_line_node())
-            .input(DataTree::from_item(Line::new(p(0.0, 0.0, 0.0), p(4.0, 0.0, 0.0))))
-            .input(DataTree::from_item(Line::new(p(1.0, -1.0, 0.0), p(1.0, 1.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(0.0, 0.0, 0.0),
+                p(4.0, 0.0, 0.0),
+            )))
+            .input(DataTree::from_item(Line::new(
+                p(1.0, -1.0, 0.0),
+                p(1.0, 1.0, 0.0),
+            )))
             .run();
         assert_clean(&r);
         assert_eq!(only::<f64>(&r, 0), 0.25);
@@ -344,14 +350,26 @@ mod tests {
     #[test]
     fn parallel_lines_warn_and_give_nulls() {
         let r = NodeCall::new(&line_line_node())
-            .input(DataTree::from_item(Line::new(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0))))
-            .input(DataTree::from_item(Line::new(p(0.0, 1.0, 0.0), p(3.0, 1.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(0.0, 0.0, 0.0),
+                p(1.0, 0.0, 0.0),
+            )))
+            .input(DataTree::from_item(Line::new(
+                p(0.0, 1.0, 0.0),
+                p(3.0, 1.0, 0.0),
+            )))
             .run();
         assert_eq!(messages(&r, Level::Warning).len(), 1);
         assert!(is_null(&r, 0) && is_null(&r, 2));
         let r = NodeCall::new(&line_line_node())
-            .input(DataTree::from_item(Line::new(p(0.0, 0.0, 0.0), p(0.0, 0.0, 0.0))))
-            .input(DataTree::from_item(Line::new(p(0.0, 1.0, 0.0), p(3.0, 1.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(0.0, 0.0, 0.0),
+                p(0.0, 0.0, 0.0),
+            )))
+            .input(DataTree::from_item(Line::new(
+                p(0.0, 1.0, 0.0),
+                p(3.0, 1.0, 0.0),
+            )))
             .run();
         assert_error(&r, "no length");
     }
@@ -360,7 +378,10 @@ mod tests {
     fn line_plane_reports_parameter_and_plane_coordinates() {
         let plane = Plane::WORLD_XY.translated(Vector3::new(0.0, 0.0, 2.0));
         let r = NodeCall::new(&line_plane_node())
-            .input(DataTree::from_item(Line::new(p(1.0, 2.0, 0.0), p(1.0, 2.0, 1.0))))
+            .input(DataTree::from_item(Line::new(
+                p(1.0, 2.0, 0.0),
+                p(1.0, 2.0, 1.0),
+            )))
             .input(DataTree::from_item(plane))
             .run();
         assert_clean(&r);
@@ -368,7 +389,10 @@ mod tests {
         assert_eq!(only::<f64>(&r, 1), 2.0);
         assert_eq!(only::<Point3>(&r, 2), p(1.0, 2.0, 0.0));
         let r = NodeCall::new(&line_plane_node())
-            .input(DataTree::from_item(Line::new(p(1.0, 2.0, 0.0), p(3.0, 2.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(1.0, 2.0, 0.0),
+                p(3.0, 2.0, 0.0),
+            )))
             .run();
         assert!(messages(&r, Level::Warning)[0].contains("parallel"));
     }
@@ -437,7 +461,10 @@ mod tests {
         let circle = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
         let r = NodeCall::new(&curve_line_node())
             .input(DataTree::from_item(curve(circle)))
-            .input(DataTree::from_item(Line::new(p(-5.0, 0.0, 0.0), p(5.0, 0.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(-5.0, 0.0, 0.0),
+                p(5.0, 0.0, 0.0),
+            )))
             .run();
         assert_clean(&r);
         assert_eq!(only::<i64>(&r, 2), 2);
@@ -445,7 +472,10 @@ mod tests {
         assert!((ts[0] - 0.0).abs() < 1e-12 && (ts[1] - std::f64::consts::PI).abs() < 1e-12);
         let r = NodeCall::new(&curve_line_node())
             .input(DataTree::from_item(curve(circle)))
-            .input(DataTree::from_item(Line::new(p(-5.0, 3.0, 0.0), p(5.0, 3.0, 0.0))))
+            .input(DataTree::from_item(Line::new(
+                p(-5.0, 3.0, 0.0),
+                p(5.0, 3.0, 0.0),
+            )))
             .run();
         assert_eq!(only::<i64>(&r, 2), 0);
         assert!(all::<Point3>(&r.outputs[0]).is_empty());

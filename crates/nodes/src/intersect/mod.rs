@@ -1,7 +1,8 @@
 //! Grasshopper's Intersect category: lines, planes and curves against lines and planes
-//! ([`mathematical`]).
+//! ([`mathematical`]), and meshes against rays and planes ([`mesh`]).
 
 pub mod mathematical;
+pub mod mesh;
 
 use locus_runtime::NodeRegistry;
 
@@ -13,4 +14,5 @@ pub const INTERSECTION_TOLERANCE: f64 = 0.001;
 /// Registers every Intersect node.
 pub fn register(registry: &mut NodeRegistry) {
     mathematical::register(registry);
+    mesh::register(registry);
 }
