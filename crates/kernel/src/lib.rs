@@ -32,6 +32,7 @@ mod brep;
 mod curve;
 mod error;
 mod geometry;
+mod intersect;
 mod mesh;
 mod surface;
 mod transform;
@@ -65,6 +66,9 @@ pub use crate::geometry::plane::{Plane, perpendicular_to};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::intersect::curve_plane::{CurveHit, CurveIntersections};
+pub use crate::intersect::linear::{line_line, line_plane, plane_plane, plane_plane_plane};
+pub use crate::intersect::mesh::{mesh_plane, mesh_ray};
 pub use crate::mesh::parameters::{
     COARSEST_MESH_ANGLE, DEFAULT_MESH_MAX_ANGLE, DEFAULT_MESH_MAX_CHORD_DEVIATION,
     DEFAULT_MESH_MAX_EDGE_LENGTH, DEFAULT_MESH_MIN_EDGE_LENGTH, FINEST_MESH_ANGLE,

@@ -100,6 +100,12 @@
 //!   Brep Edges \[Edges\], Area, Volume, Singular Points \[Sing\] (the book's singularity
 //!   tutorial, not a stock Grasshopper component) (Analysis); Brep Join \[Join\] (Util).
 //!
+//! **Intersect** ([`intersect`])
+//! - Mathematical ([`intersect::mathematical`]): Line | Line \[LLX\], Line | Plane \[PLX\],
+//!   Plane | Plane \[PPX\], Plane | Plane | Plane \[3PX\], Curve | Plane \[PCX\],
+//!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
+//!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
+//!
 //! # Performance
 //!
 //! `cargo bench -p locus-nodes --bench library` measures the library's nodes against
@@ -159,6 +165,7 @@ mod constraints;
 pub mod curve;
 pub mod display;
 pub mod expression;
+pub mod intersect;
 pub mod maths;
 pub mod mesh;
 pub mod params;
@@ -182,4 +189,5 @@ pub fn register(registry: &mut NodeRegistry) {
     sets::register(registry);
     mesh::register(registry);
     display::register(registry);
+    intersect::register(registry);
 }

@@ -1,0 +1,18 @@
+//! Grasshopper's Intersect category: lines, planes and curves against lines and planes
+//! ([`mathematical`]), and meshes against rays and planes ([`mesh`]).
+
+pub mod mathematical;
+pub mod mesh;
+
+use locus_runtime::NodeRegistry;
+
+/// The distance within which inputs meet: 0.001 model units, Rhino's default absolute
+/// tolerance (a new model's), which Grasshopper's intersection components use as the
+/// document's tolerance. Points are polished to full precision whatever the tolerance.
+pub const INTERSECTION_TOLERANCE: f64 = 0.001;
+
+/// Registers every Intersect node.
+pub fn register(registry: &mut NodeRegistry) {
+    mathematical::register(registry);
+    mesh::register(registry);
+}
