@@ -53,6 +53,7 @@ pub use crate::curve::hermite::CubicHermite;
 pub use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
 pub use crate::curve::line::Line;
 pub use crate::curve::nurbs::NurbsCurve;
+pub use crate::curve::offset::{CurveOffset, MAX_OFFSET_SAMPLES, OffsetCorners};
 pub use crate::curve::nurbs::basis;
 pub use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
 pub use crate::curve::polyline::Polyline;

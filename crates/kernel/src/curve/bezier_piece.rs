@@ -76,6 +76,11 @@ pub(crate) fn blossoms<const N: usize>(
 }
 
 impl BezierPiece {
+    /// The homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
+    pub(crate) fn homogeneous(&self) -> &[[f64; 4]] {
+        &self.points[..=self.degree]
+    }
+
     /// The squared distance from `p` to the axis-aligned box of the projected control points.
     pub(crate) fn box_distance_squared(&self, p: Point3) -> f64 {
         let mut lo = [f64::INFINITY; 3];

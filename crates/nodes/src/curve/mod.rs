@@ -13,6 +13,7 @@
 
 pub mod analysis;
 pub mod division;
+pub mod edit;
 pub mod primitive;
 pub mod primitive_more;
 pub mod spline;
@@ -30,6 +31,7 @@ pub fn register(registry: &mut NodeRegistry) {
     division::register(registry);
     util::register(registry);
     primitive_more::register(registry);
+    edit::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve
