@@ -180,7 +180,7 @@ pub fn offset_curve() -> NodeType {
                 .default_value(Plane::WORLD_XY),
         )
         .input(
-            Port::new("Corners", "C", DataType::Integer)
+            Port::new("Corners", "Cr", DataType::Integer)
                 .doc(
                     "Corner fill: 0 none (as sharp), 1 sharp, 2 round, 3 smooth, 4 chamfer. \
                      Default 1.",
