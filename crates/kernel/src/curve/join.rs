@@ -16,8 +16,8 @@
 //!   traces every piece in turn. Its domain starts at the first piece's and each piece keeps the
 //!   length of its own domain.
 
-use crate::curve::nurbs::basis::MAX_DEGREE;
 use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
+use crate::curve::nurbs::basis::MAX_DEGREE;
 use crate::{Curve, Error, Interval, Line, NurbsCurve, Point3, Polyline, Result};
 
 impl NurbsCurve {
@@ -128,14 +128,22 @@ impl Curve {
                 if let Some((index, reversed, _)) = next.filter(|n| n.2 <= tolerance) {
                     used[index] = true;
                     chain.push_back(Piece { index, reversed });
-                    tail = if reversed { ends[index].0 } else { ends[index].1 };
+                    tail = if reversed {
+                        ends[index].0
+                    } else {
+                        ends[index].1
+                    };
                     continue;
                 }
                 let prev = nearest(&ends, &used, &closed, head, preserve_direction, false);
                 if let Some((index, reversed, _)) = prev.filter(|n| n.2 <= tolerance) {
                     used[index] = true;
                     chain.push_front(Piece { index, reversed });
-                    head = if reversed { ends[index].1 } else { ends[index].0 };
+                    head = if reversed {
+                        ends[index].1
+                    } else {
+                        ends[index].0
+                    };
                     continue;
                 }
                 break;
@@ -255,12 +263,9 @@ fn join_chain(curves: &[Curve], pieces: &[Piece], closed: bool) -> Result<Curve>
     if pieces.len() == 1 {
         return Ok(oriented(&pieces[0]));
     }
-    let straight = pieces.iter().all(|p| {
-        matches!(
-            curves[p.index],
-            Curve::Line { .. } | Curve::Polyline { .. }
-        )
-    });
+    let straight = pieces
+        .iter()
+        .all(|p| matches!(curves[p.index], Curve::Line { .. } | Curve::Polyline { .. }));
     if straight {
         let mut points: Vec<Point3> = Vec::new();
         for piece in pieces {
@@ -278,7 +283,10 @@ fn join_chain(curves: &[Curve], pieces: &[Piece], closed: bool) -> Result<Curve>
         }
         return Ok(Polyline::new(points)?.into());
     }
-    let nurbs: Vec<NurbsCurve> = pieces.iter().map(|p| oriented(p).to_nurbs().clamped()).collect();
+    let nurbs: Vec<NurbsCurve> = pieces
+        .iter()
+        .map(|p| oriented(p).to_nurbs().clamped())
+        .collect();
     let degree = nurbs.iter().map(NurbsCurve::degree).max().expect("pieces");
     let mut cvs: Vec<[f64; 4]> = Vec::new();
     let mut knots: Vec<f64> = Vec::new();
@@ -294,13 +302,8 @@ fn join_chain(curves: &[Curve], pieces: &[Piece], closed: bool) -> Result<Curve>
                 q.iter_mut().for_each(|c| *c *= scale);
             }
             let w = last[3];
-            let joint: [f64; 4] = std::array::from_fn(|c| {
-                if c == 3 {
-                    w
-                } else {
-                    0.5 * (last[c] + h[0][c])
-                }
-            });
+            let joint: [f64; 4] =
+                std::array::from_fn(|c| if c == 3 { w } else { 0.5 * (last[c] + h[0][c]) });
             *cvs.last_mut().expect("cvs") = joint;
             let shift = knots.last().expect("knots") - k[0];
             k.iter_mut().for_each(|t| *t += shift);
@@ -338,11 +341,18 @@ mod tests {
 
     #[test]
     fn elevation_keeps_the_shape() {
-        let c = NurbsCurve::create(&[p(0.0, 0.0), p(1.0, 2.0), p(3.0, 1.0), p(4.0, 3.0)], 2, false)
-            .unwrap();
-        let arc = Arc::new(Circle::new(Plane::WORLD_XY, 2.0).unwrap(), Interval::new(0.2, 4.0))
-            .unwrap()
-            .to_nurbs();
+        let c = NurbsCurve::create(
+            &[p(0.0, 0.0), p(1.0, 2.0), p(3.0, 1.0), p(4.0, 3.0)],
+            2,
+            false,
+        )
+        .unwrap();
+        let arc = Arc::new(
+            Circle::new(Plane::WORLD_XY, 2.0).unwrap(),
+            Interval::new(0.2, 4.0),
+        )
+        .unwrap()
+        .to_nurbs();
         for curve in [c, arc] {
             for degree in [curve.degree(), 3, 5] {
                 let e = curve.elevated(degree).unwrap();
@@ -350,7 +360,10 @@ mod tests {
                 assert_eq!(e.domain(), curve.domain());
                 for i in 0..=40 {
                     let t = curve.domain().parameter_at(i as f64 / 40.0);
-                    assert!(e.point_at(t).distance(curve.point_at(t)) < 1e-12, "{degree} {t}");
+                    assert!(
+                        e.point_at(t).distance(curve.point_at(t)) < 1e-12,
+                        "{degree} {t}"
+                    );
                 }
             }
             assert!(curve.elevated(1).is_err());
@@ -373,7 +386,13 @@ mod tests {
         };
         assert_eq!(
             polyline.points(),
-            [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)]
+            [
+                p(0.0, 0.0),
+                p(1.0, 0.0),
+                p(1.0, 1.0),
+                p(0.0, 1.0),
+                p(0.0, 0.0)
+            ]
         );
         assert!(joined[0].is_closed());
         assert!((joined[0].length() - 4.0).abs() < 1e-15);
@@ -398,7 +417,11 @@ mod tests {
         assert!(matches!(joined[0], Curve::Polyline { .. }));
         assert!(matches!(joined[1], Curve::Line { .. }));
         assert!(Curve::join(&curves, f64::NAN, false).is_err());
-        assert!(Curve::join(&[], DOCUMENT_TOLERANCE, false).unwrap().is_empty());
+        assert!(
+            Curve::join(&[], DOCUMENT_TOLERANCE, false)
+                .unwrap()
+                .is_empty()
+        );
     }
 
     #[test]
@@ -410,9 +433,17 @@ mod tests {
             Interval::new(-std::f64::consts::FRAC_PI_2, 0.0),
         )
         .unwrap();
-        let cubic = NurbsCurve::create(&[p(2.0, 4.0), p(2.0, 3.0), p(2.5, 2.0), p(2.0, 1.0)], 3, false)
-            .unwrap();
-        let curves = vec![line(p(0.0, 0.0), p(1.0, 0.0)), cubic.clone().into(), arc.into()];
+        let cubic = NurbsCurve::create(
+            &[p(2.0, 4.0), p(2.0, 3.0), p(2.5, 2.0), p(2.0, 1.0)],
+            3,
+            false,
+        )
+        .unwrap();
+        let curves = vec![
+            line(p(0.0, 0.0), p(1.0, 0.0)),
+            cubic.clone().into(),
+            arc.into(),
+        ];
         let joined = Curve::join(&curves, DOCUMENT_TOLERANCE, false).unwrap();
         assert_eq!(joined.len(), 1);
         let Curve::Nurbs(n) = &joined[0] else {
@@ -424,7 +455,10 @@ mod tests {
         let total = 1.0 + std::f64::consts::FRAC_PI_2 + Curve::from(cubic.clone()).length();
         assert!((joined[0].length() - total).abs() < 1e-9);
         // Every piece is traced: the arc's midpoint and the cubic's midpoint lie on the result.
-        let mid = p(1.0 + std::f64::consts::FRAC_1_SQRT_2, 1.0 - std::f64::consts::FRAC_1_SQRT_2);
+        let mid = p(
+            1.0 + std::f64::consts::FRAC_1_SQRT_2,
+            1.0 - std::f64::consts::FRAC_1_SQRT_2,
+        );
         for q in [mid, cubic.point_at(cubic.domain().mid())] {
             let cp = joined[0].closest_point(q).unwrap();
             assert!(cp.point.distance(q) < 1e-9, "{q:?}");
@@ -435,8 +469,14 @@ mod tests {
 
     #[test]
     fn explode_undoes_join() {
-        let square = Polyline::new(vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)])
-            .unwrap();
+        let square = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(1.0, 1.0),
+            p(0.0, 1.0),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         let segments = Curve::from(square.clone()).explode(true).unwrap();
         assert_eq!(segments.len(), 4);
         assert!(segments.iter().all(|s| matches!(s, Curve::Line { .. })));
@@ -449,8 +489,12 @@ mod tests {
         assert!(pieces.iter().all(|s| matches!(s, Curve::Line { .. })));
         assert!((pieces[3].length() - 1.0).abs() < 1e-15);
         // The joined line, cubic and arc come apart at their joints.
-        let cubic = NurbsCurve::create(&[p(1.0, 0.0), p(2.0, 1.0), p(3.0, -1.0), p(4.0, 0.0)], 3, false)
-            .unwrap();
+        let cubic = NurbsCurve::create(
+            &[p(1.0, 0.0), p(2.0, 1.0), p(3.0, -1.0), p(4.0, 0.0)],
+            3,
+            false,
+        )
+        .unwrap();
         let joined = Curve::join(
             &[line(p(0.0, 0.0), p(1.0, 0.0)), cubic.into()],
             DOCUMENT_TOLERANCE,

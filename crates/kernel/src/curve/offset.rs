@@ -22,8 +22,8 @@
 use crate::curve::nurbs::interpolate::KnotStyle;
 use crate::geometry::tolerance::ZERO_TOLERANCE;
 use crate::{
-    Arc, Circle, CubicHermite, Curve, Error, Line, NurbsCurve, Plane, Point3, Polyline,
-    Result, Vector3,
+    Arc, Circle, CubicHermite, Curve, Error, Line, NurbsCurve, Plane, Point3, Polyline, Result,
+    Vector3,
 };
 
 /// The most samples a curve offset takes before giving up on its tolerance.
@@ -71,7 +71,9 @@ impl Curve {
         tolerance: f64,
     ) -> Result<CurveOffset> {
         if !distance.is_finite() || !plane.is_finite() || !tolerance.is_finite() {
-            return Err(Error::NotFinite { what: "offset input" });
+            return Err(Error::NotFinite {
+                what: "offset input",
+            });
         }
         if tolerance <= 0.0 {
             return Err(Error::InvalidInput(format!(
@@ -109,7 +111,9 @@ impl Curve {
                     domain: *domain,
                 }))
             }
-            Self::Polyline { polyline, .. } => offset_polyline(polyline.points(), distance, n, corners),
+            Self::Polyline { polyline, .. } => {
+                offset_polyline(polyline.points(), distance, n, corners)
+            }
             Self::Nurbs(c) if c.degree() == 1 => offset_polyline(c.points(), distance, n, corners),
             _ => {
                 let pieces = self.explode(true)?;
@@ -129,9 +133,9 @@ fn parallel(a: Vector3, b: Vector3) -> bool {
 
 /// The unit offset direction `T × N` for a direction of travel `t`.
 fn side(t: Vector3, n: Vector3) -> Result<Vector3> {
-    t.cross(n).try_normalize().ok_or_else(|| {
-        Error::InvalidInput("the curve runs along the offset plane's normal".into())
-    })
+    t.cross(n)
+        .try_normalize()
+        .ok_or_else(|| Error::InvalidInput("the curve runs along the offset plane's normal".into()))
 }
 
 /// A circle with its radius changed by the offset.
@@ -164,14 +168,18 @@ fn offset_polyline(
 ) -> Result<CurveOffset> {
     let mut vertices: Vec<Point3> = Vec::with_capacity(points.len());
     for &p in points {
-        if vertices.last().is_none_or(|q| q.distance(p) > ZERO_TOLERANCE) {
+        if vertices
+            .last()
+            .is_none_or(|q| q.distance(p) > ZERO_TOLERANCE)
+        {
             vertices.push(p);
         }
     }
     if vertices.len() < 2 {
         return Err(Error::InvalidInput("the polyline has no length".into()));
     }
-    let closed = vertices.len() >= 4 && vertices[0].distance(vertices[vertices.len() - 1]) <= ZERO_TOLERANCE;
+    let closed =
+        vertices.len() >= 4 && vertices[0].distance(vertices[vertices.len() - 1]) <= ZERO_TOLERANCE;
     let mut segments = Vec::with_capacity(vertices.len() - 1);
     for w in vertices.windows(2) {
         let tangent = (w[1] - w[0]).try_normalize().expect("distinct vertices");
@@ -186,7 +194,14 @@ fn offset_polyline(
         .iter()
         .map(|s| (s.from + s.side, s.to + s.side, s.tangent))
         .collect();
-    joined_with_corners(&lines, &segments_corners(&segments, closed), distance, n, corners, closed)
+    joined_with_corners(
+        &lines,
+        &segments_corners(&segments, closed),
+        distance,
+        n,
+        corners,
+        closed,
+    )
 }
 
 /// For each joint (between segment `k` and `k + 1`, and between the last and the first when
@@ -301,7 +316,9 @@ fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Re
     loop {
         let ts: Vec<f64> = breaks
             .windows(2)
-            .flat_map(|w| (0..per_span).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / per_span as f64))
+            .flat_map(|w| {
+                (0..per_span).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / per_span as f64)
+            })
             .chain(std::iter::once(d.t1))
             .collect();
         let mut points = Vec::with_capacity(ts.len());
@@ -365,7 +382,12 @@ fn offset_pieces(
     let mut offsets = Vec::with_capacity(pieces.len());
     let mut warnings = Vec::new();
     for piece in pieces {
-        let o = piece.offset(distance, &Plane::from_normal(Point3::ORIGIN, n)?, corners, tolerance)?;
+        let o = piece.offset(
+            distance,
+            &Plane::from_normal(Point3::ORIGIN, n)?,
+            corners,
+            tolerance,
+        )?;
         warnings.extend(o.warnings);
         offsets.push(o.curve);
     }
@@ -384,10 +406,8 @@ fn offset_pieces(
         }
         let d1 = pieces[k].domain();
         let d2 = pieces[next].domain();
-        let (Some(t1), Some(t2)) = (
-            pieces[k].tangent_at(d1.t1),
-            pieces[next].tangent_at(d2.t0),
-        ) else {
+        let (Some(t1), Some(t2)) = (pieces[k].tangent_at(d1.t1), pieces[next].tangent_at(d2.t0))
+        else {
             out.push(Line::new(p, q).into());
             continue;
         };

@@ -42,8 +42,12 @@ pub(crate) fn curve_list(s: &mut Solve<'_>, input: usize) -> Result<Vec<Shared<C
             nulls += 1;
             continue;
         };
-        let curve = curve_from_value(&value)
-            .ok_or_else(|| format!("input {name}: item {i}, a {}, is not a curve", value.data_type()))?;
+        let curve = curve_from_value(&value).ok_or_else(|| {
+            format!(
+                "input {name}: item {i}, a {}, is not a curve",
+                value.data_type()
+            )
+        })?;
         valid_curve(&curve, &format!("{name} (item {i})"))?;
         out.push(curve);
     }
@@ -255,7 +259,10 @@ mod tests {
             .input(DataTree::from_list(vec![Value::Number(1.0)]))
             .run();
         let e = single_error(&r);
-        assert!(e.contains("not a curve") || e.contains("invalid cast"), "{e}");
+        assert!(
+            e.contains("not a curve") || e.contains("invalid cast"),
+            "{e}"
+        );
         let r = NodeCall::new(&join_curves())
             .input({
                 let mut branch = Branch::new(DataType::Line);
@@ -270,13 +277,22 @@ mod tests {
 
     #[test]
     fn explode_a_closed_polyline() {
-        let square = Polyline::new(vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 2.0), p(0.0, 2.0), p(0.0, 0.0)])
-            .unwrap();
+        let square = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(2.0, 0.0),
+            p(2.0, 2.0),
+            p(0.0, 2.0),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         let r = NodeCall::new(&explode()).input(curve_tree(square)).run();
         let segments = curves(&r.outputs[0]);
         assert_eq!(segments.len(), 4);
         assert!(segments.iter().all(|s| s.length() == 2.0));
-        assert_eq!(points(&r.outputs[1]), vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 2.0), p(0.0, 2.0)]);
+        assert_eq!(
+            points(&r.outputs[1]),
+            vec![p(0.0, 0.0), p(2.0, 0.0), p(2.0, 2.0), p(0.0, 2.0)]
+        );
         let circle = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
         let r = NodeCall::new(&explode()).input(curve_tree(circle)).run();
         assert_eq!(curves(&r.outputs[0]).len(), 1);
@@ -290,7 +306,9 @@ mod tests {
     #[test]
     fn offset_a_circle_and_a_square() {
         let circle = Circle::new(Plane::WORLD_XY, 5.0).unwrap();
-        let r = NodeCall::new(&offset_curve()).input(curve_tree(circle)).run();
+        let r = NodeCall::new(&offset_curve())
+            .input(curve_tree(circle))
+            .run();
         let out = curves(&r.outputs[0]);
         let Curve::Circle { circle: c, .. } = &*out[0] else {
             panic!("{out:?}")
@@ -301,8 +319,14 @@ mod tests {
             .input(DataTree::from_item(-6.0))
             .run();
         assert!(single_error(&r).contains("collapses"));
-        let square = Polyline::new(vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)])
-            .unwrap();
+        let square = Polyline::new(vec![
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(1.0, 1.0),
+            p(0.0, 1.0),
+            p(0.0, 0.0),
+        ])
+        .unwrap();
         let r = NodeCall::new(&offset_curve())
             .input(curve_tree(square.clone()))
             .input(DataTree::from_item(1.0))

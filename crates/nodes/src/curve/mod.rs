@@ -1,7 +1,7 @@
 //! Curve: Grasshopper's Curve tab — primitives (Line, Circle, Arc), splines (PolyLine, Bézier
 //! Span, NURBS curves, Interpolate, Knot Vector), analysis (evaluation, curvature, domains,
 //! lengths, closest points, continuity), division (Divide Curve, Divide Length, Shatter) and
-//! utilities (Flip Curve, Split Curve).
+//! utilities (Flip Curve, Split Curve) and editing (Join Curves, Explode, Offset Curve).
 //!
 //! Curves flow as `Value::Curve`; lines, circles and arcs also have their own value types, which
 //! the nodes that build them output (as Grasshopper's Line gives a line). Every port that takes a

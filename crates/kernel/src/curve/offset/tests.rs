@@ -16,12 +16,19 @@ fn offset(c: impl Into<Curve>, d: f64, corners: OffsetCorners) -> CurveOffset {
 
 #[test]
 fn lines_move_to_the_right() {
-    let o = offset(Line::new(p(0.0, 0.0), p(4.0, 0.0)), 1.0, OffsetCorners::Sharp);
+    let o = offset(
+        Line::new(p(0.0, 0.0), p(4.0, 0.0)),
+        1.0,
+        OffsetCorners::Sharp,
+    );
     assert_eq!(o.curve.start_point(), p(0.0, -1.0));
     assert_eq!(o.curve.end_point(), p(4.0, -1.0));
     assert!(o.warnings.is_empty());
     let up: Curve = Line::new(Point3::ORIGIN, Point3::new(0.0, 0.0, 1.0)).into();
-    assert!(up.offset(1.0, &Plane::WORLD_XY, OffsetCorners::Sharp, 0.001).is_err());
+    assert!(
+        up.offset(1.0, &Plane::WORLD_XY, OffsetCorners::Sharp, 0.001)
+            .is_err()
+    );
 }
 
 #[test]
@@ -57,7 +64,14 @@ fn circles_and_arcs_change_radius() {
 
 fn unit_square() -> Polyline {
     // Counter-clockwise.
-    Polyline::new(vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 0.0)]).unwrap()
+    Polyline::new(vec![
+        p(0.0, 0.0),
+        p(1.0, 0.0),
+        p(1.0, 1.0),
+        p(0.0, 1.0),
+        p(0.0, 0.0),
+    ])
+    .unwrap()
 }
 
 #[test]
@@ -68,10 +82,19 @@ fn a_square_offset_outwards_with_each_corner_style() {
     };
     assert_eq!(
         polyline.points(),
-        [p(-1.0, -1.0), p(2.0, -1.0), p(2.0, 2.0), p(-1.0, 2.0), p(-1.0, -1.0)]
+        [
+            p(-1.0, -1.0),
+            p(2.0, -1.0),
+            p(2.0, 2.0),
+            p(-1.0, 2.0),
+            p(-1.0, -1.0)
+        ]
     );
     assert!((sharp.curve.length() - 12.0).abs() < 1e-14);
-    assert_eq!(offset(unit_square(), 1.0, OffsetCorners::None).curve, sharp.curve);
+    assert_eq!(
+        offset(unit_square(), 1.0, OffsetCorners::None).curve,
+        sharp.curve
+    );
     // Round: four sides of 1 and four quarter circles of radius 1.
     let round = offset(unit_square(), 1.0, OffsetCorners::Round).curve;
     assert!(round.is_closed());
@@ -132,17 +155,34 @@ fn a_tilted_circle_and_an_ellipse_are_approximated() {
         ]))
         .unwrap();
     let o = ellipse
-        .offset(0.5, &Plane::WORLD_XY, OffsetCorners::Sharp, DOCUMENT_TOLERANCE)
+        .offset(
+            0.5,
+            &Plane::WORLD_XY,
+            OffsetCorners::Sharp,
+            DOCUMENT_TOLERANCE,
+        )
         .unwrap();
     assert!(o.warnings.is_empty(), "{:?}", o.warnings);
     assert!(o.curve.is_closed());
     let (lo, hi) = distance_range(&ellipse, &o.curve);
-    assert!(lo > 0.5 - DOCUMENT_TOLERANCE && hi < 0.5 + DOCUMENT_TOLERANCE, "{lo} {hi}");
+    assert!(
+        lo > 0.5 - DOCUMENT_TOLERANCE && hi < 0.5 + DOCUMENT_TOLERANCE,
+        "{lo} {hi}"
+    );
     // Inwards beyond the smallest radius of curvature (1 at the ends of the long axis).
     let cusp = ellipse
-        .offset(-1.5, &Plane::WORLD_XY, OffsetCorners::Sharp, DOCUMENT_TOLERANCE)
+        .offset(
+            -1.5,
+            &Plane::WORLD_XY,
+            OffsetCorners::Sharp,
+            DOCUMENT_TOLERANCE,
+        )
         .unwrap();
-    assert!(cusp.warnings.iter().any(|w| w.contains("radius of curvature")));
+    assert!(
+        cusp.warnings
+            .iter()
+            .any(|w| w.contains("radius of curvature"))
+    );
 }
 
 #[test]
@@ -154,17 +194,28 @@ fn kinked_curves_offset_piece_by_piece() {
     )
     .unwrap();
     let joined = Curve::join(
-        &[Line::new(p(0.0, 0.0), p(1.0, 0.0)).into(), Curve::from(arc).reversed()],
+        &[
+            Line::new(p(0.0, 0.0), p(1.0, 0.0)).into(),
+            Curve::from(arc).reversed(),
+        ],
         DOCUMENT_TOLERANCE,
         false,
     )
     .unwrap();
     assert_eq!(joined.len(), 1);
     let o = joined[0]
-        .offset(0.25, &Plane::WORLD_XY, OffsetCorners::Round, DOCUMENT_TOLERANCE)
+        .offset(
+            0.25,
+            &Plane::WORLD_XY,
+            OffsetCorners::Round,
+            DOCUMENT_TOLERANCE,
+        )
         .unwrap();
     let (lo, hi) = distance_range(&joined[0], &o.curve);
-    assert!(lo > 0.25 - DOCUMENT_TOLERANCE && hi < 0.25 + DOCUMENT_TOLERANCE, "{lo} {hi}");
+    assert!(
+        lo > 0.25 - DOCUMENT_TOLERANCE && hi < 0.25 + DOCUMENT_TOLERANCE,
+        "{lo} {hi}"
+    );
 }
 
 proptest! {
