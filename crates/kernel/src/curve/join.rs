@@ -122,7 +122,7 @@ impl Curve {
                 reversed: false,
             }]);
             let (mut head, mut tail) = ends[seed];
-            while !closed[seed] && !(chain.len() > 1 && head.distance(tail) <= tolerance) {
+            while !closed[seed] && (chain.len() <= 1 || head.distance(tail) > tolerance) {
                 // Grow at the end: a start (or, reversed, an end) meeting the tail.
                 let next = nearest(&ends, &used, &closed, tail, preserve_direction, true);
                 if let Some((index, reversed, _)) = next.filter(|n| n.2 <= tolerance) {
