@@ -56,6 +56,7 @@ pub use crate::curve::line::Line;
 pub use crate::curve::nurbs::NurbsCurve;
 pub use crate::curve::nurbs::basis;
 pub use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
+pub use crate::curve::offset::{CurveOffset, MAX_OFFSET_SAMPLES, OffsetCorners};
 pub use crate::curve::polyline::Polyline;
 pub use crate::error::{Error, Result};
 pub use crate::geometry::best_candidate::{BEST_CANDIDATES, best_candidate_samples};

@@ -17,11 +17,13 @@ pub(crate) mod circle;
 pub(crate) mod closest_point;
 pub(crate) mod continuity;
 pub(crate) mod hermite;
+pub(crate) mod join;
 pub(crate) mod kinks;
 pub(crate) mod length_table;
 pub(crate) mod line;
 pub(crate) mod measure;
 pub(crate) mod nurbs;
+pub(crate) mod offset;
 pub(crate) mod polyline;
 pub(crate) mod split;
 

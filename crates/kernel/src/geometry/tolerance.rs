@@ -46,3 +46,8 @@ pub const LENGTH_TOLERANCE: f64 = 1e-12;
 
 /// The default relative tolerance between curvature magnitudes for G2 continuity: 1e-9.
 pub const CURVATURE_TOLERANCE: f64 = 1e-9;
+
+/// The document tolerance of Rhino's default templates, 0.001 model units: the distance within
+/// which curve ends join ([`Curve::join`](crate::Curve::join)) and within which approximations
+/// such as curve offsets are made.
+pub const DOCUMENT_TOLERANCE: f64 = 0.001;

@@ -1,7 +1,7 @@
 //! Curve: Grasshopper's Curve tab — primitives (Line, Circle, Arc), splines (PolyLine, Bézier
 //! Span, NURBS curves, Interpolate, Knot Vector), analysis (evaluation, curvature, domains,
 //! lengths, closest points, continuity), division (Divide Curve, Divide Length, Shatter) and
-//! utilities (Flip Curve, Split Curve).
+//! utilities (Flip Curve, Split Curve) and editing (Join Curves, Explode, Offset Curve).
 //!
 //! Curves flow as `Value::Curve`; lines, circles and arcs also have their own value types, which
 //! the nodes that build them output (as Grasshopper's Line gives a line). Every port that takes a
@@ -13,6 +13,7 @@
 
 pub mod analysis;
 pub mod division;
+pub mod edit;
 pub mod primitive;
 pub mod primitive_more;
 pub mod primitive_rect;
@@ -32,6 +33,7 @@ pub fn register(registry: &mut NodeRegistry) {
     util::register(registry);
     primitive_more::register(registry);
     primitive_rect::register(registry);
+    edit::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve
