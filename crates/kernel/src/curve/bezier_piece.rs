@@ -76,8 +76,6 @@ pub(crate) fn blossoms<const N: usize>(
 }
 
 impl BezierPiece {
-    /// The homogeneous Bézier control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
-    pub(crate) fn homogeneous_points(&self) -> &[[f64; 4]] {
     /// The homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
     pub(crate) fn homogeneous(&self) -> &[[f64; 4]] {
         &self.points[..=self.degree]

@@ -161,7 +161,7 @@ pub(crate) fn nurbs_plane(curve: &NurbsCurve, plane: &Plane, tolerance: f64) -> 
     let mut out = CurveIntersections::default();
     for span in curve.span_indices() {
         let piece = curve.bezier_piece(span);
-        let h = piece.homogeneous_points();
+        let h = piece.homogeneous();
         let len = h.len();
         let mut numerator = [0.0; MAX_ORDER];
         let mut weight = [0.0; MAX_ORDER];
