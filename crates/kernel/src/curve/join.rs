@@ -292,7 +292,7 @@ fn join_chain(curves: &[Curve], pieces: &[Piece], closed: bool) -> Result<Curve>
     let mut knots: Vec<f64> = Vec::new();
     for piece in &nurbs {
         let piece = piece.elevated(degree)?;
-        let mut h = piece.homogeneous();
+        let mut h = piece.homogeneous_points();
         let mut k = piece.knots().to_vec();
         if let Some(&last) = cvs.last() {
             // Scale the piece so that its first weight is the previous end's, then put the joint

@@ -234,8 +234,8 @@ fn join_clamped(a: &NurbsCurve, b: &NurbsCurve) -> Result<NurbsCurve> {
     }
     let joint = a.domain().t1;
     let shift = joint - b.domain().t0;
-    let mut cvs = a.homogeneous();
-    let bh = b.homogeneous();
+    let mut cvs = a.homogeneous_points();
+    let bh = b.homogeneous_points();
     // Scaling homogeneous points keeps the curve; make the joint weights agree.
     let scale = cvs[cvs.len() - 1][3] / bh[0][3];
     cvs.extend(

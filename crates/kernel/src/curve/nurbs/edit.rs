@@ -72,7 +72,7 @@ impl NurbsCurve {
         if times == 0 {
             return Ok(self.clone());
         }
-        let mut cvs = self.homogeneous();
+        let mut cvs = self.homogeneous_points();
         let mut knots = self.knots().to_vec();
         for _ in 0..times {
             insert_once(self.degree(), &mut cvs, &mut knots, t);
@@ -87,7 +87,7 @@ impl NurbsCurve {
     pub fn clamped(&self) -> Self {
         let p = self.degree();
         let d = self.domain();
-        let mut cvs = self.homogeneous();
+        let mut cvs = self.homogeneous_points();
         let mut knots = self.knots().to_vec();
         // The start: make t0 a knot of multiplicity p, then drop what precedes it.
         while knots.iter().filter(|&&k| k == d.t0).count() < p {
@@ -123,7 +123,7 @@ impl NurbsCurve {
         let refined = self.insert_knot(t, times)?;
         let knots = refined.knots();
         let a = knots.iter().position(|&k| k == t).expect("t is a knot");
-        let cvs = refined.homogeneous();
+        let cvs = refined.homogeneous_points();
         let left = Self::from_homogeneous(p, &cvs[..=a], knots[..a + p].to_vec())?;
         let right = Self::from_homogeneous(p, &cvs[a..], knots[a..].to_vec())?;
         Ok((left.clamped(), right.clamped()))
@@ -222,7 +222,7 @@ impl NurbsCurve {
         }
         let m = transform.to_rows();
         let cvs: Homogeneous = self
-            .homogeneous()
+            .homogeneous_points()
             .iter()
             .map(|h| {
                 let row = |r: [f64; 4]| r[0] * h[0] + r[1] * h[1] + r[2] * h[2] + r[3] * h[3];
