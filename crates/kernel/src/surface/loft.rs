@@ -32,17 +32,17 @@ impl NurbsSurface {
     /// and `v` across them (domain `0..1`); the isocurve at each section's `v` is that section.
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] for fewer than two sections (three when closed), or more than
-    /// [`MAX_LOFT_SECTIONS`]; [`Error::InvalidInput`] when two consecutive sections coincide
+    /// [`Error::InvalidInput`] for fewer than two sections (three when closed) or more than
+    /// [`MAX_LOFT_SECTIONS`], and when two consecutive sections coincide
     /// in every control point; the errors of [`NurbsCurve::make_compatible`].
     pub fn loft(sections: &[NurbsCurve], kind: LoftType, closed: bool) -> Result<Self> {
         let needed = if closed { 3 } else { 2 };
         if sections.len() < needed || sections.len() > MAX_LOFT_SECTIONS {
-            return Err(Error::TooFewPoints {
-                what: "a loft (sections)",
-                needed,
-                got: sections.len(),
-            });
+            return Err(Error::InvalidInput(format!(
+                "a{} loft needs at least {needed} and at most {MAX_LOFT_SECTIONS} sections, got {}",
+                if closed { " closed" } else { "n open" },
+                sections.len()
+            )));
         }
         let mut curves = NurbsCurve::make_compatible(sections)?;
         if closed {
