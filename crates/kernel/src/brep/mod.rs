@@ -20,6 +20,7 @@
 
 pub(crate) mod bounding_box;
 pub(crate) mod builders;
+pub(crate) mod cap;
 pub(crate) mod extrude;
 pub(crate) mod join;
 pub(crate) mod mass;
