@@ -16,9 +16,41 @@ use super::extrusion::MODEL_TOLERANCE;
 /// Id of [`boundary_surfaces`].
 pub const BOUNDARY_SURFACES: &str = "surface.boundary_surfaces";
 
-/// Registers Boundary Surfaces.
+/// Id of [`cap_holes`].
+pub const CAP_HOLES: &str = "surface.cap_holes";
+
+/// Registers Boundary Surfaces and Cap Holes.
 pub fn register(registry: &mut locus_runtime::NodeRegistry) {
     registry.register(boundary_surfaces());
+    registry.register(cap_holes());
+}
+
+/// Cap Holes \[Cap\]: planar faces on the planar holes of a B-rep.
+pub fn cap_holes() -> NodeType {
+    surface_node(CAP_HOLES, "Cap Holes", "Cap", "Util")
+        .gh_guid("b648d933-ddea-4e75-834c-8f6f3793e311")
+        .description(
+            "Caps the planar holes of a B-rep: naked edges are chained end to end into closed \
+             loops, and every loop that is planar (within 0.001) gets a planar face bounded by \
+             those edges, joined to the B-rep (an open tube becomes a closed cylinder). Loops \
+             that are open or not planar stay open, with a remark; a closed B-rep is returned \
+             unchanged.",
+        )
+        .input(Port::new("Brep", "B", DataType::Brep).doc("The B-rep to cap."))
+        .output(Port::new("Brep", "B", DataType::Brep).doc("The capped B-rep."))
+        .solve(|s| {
+            let brep = super::brep::brep_item(s, 0)?;
+            let naked = brep.edges_of_kind(locus_kernel::EdgeKind::Naked).len();
+            let (capped, caps) = brep.cap_planar_holes(MODEL_TOLERANCE)?;
+            let still = capped.edges_of_kind(locus_kernel::EdgeKind::Naked).len();
+            if naked > 0 && still > 0 {
+                s.remark(format!(
+                    "{caps} hole(s) capped; {still} naked edge(s) are left (open or non-planar loops)"
+                ));
+            }
+            s.set(0, Shared::new(capped));
+            Ok(())
+        })
 }
 
 /// Boundary Surfaces \[Boundary\]: planar faces from closed planar curves.
@@ -94,6 +126,23 @@ mod tests {
         assert_eq!(faces.len(), 1);
         let Value::Brep(b) = &faces[0] else { panic!() };
         assert!((b.area().unwrap() - 8.0 * PI).abs() < 1e-9);
+    }
+
+    #[test]
+    fn an_open_tube_is_capped() {
+        let tube = Brep::from_cylinder(
+            &locus_kernel::Cylinder::new(Plane::WORLD_XY, 1.0, 2.0).unwrap(),
+            false,
+        )
+        .unwrap();
+        let r = NodeCall::new(&cap_holes())
+            .input(DataTree::from_item(Shared::new(tube)))
+            .run();
+        let Some(Value::Brep(b)) = r.outputs[0].values().next().flatten() else {
+            panic!("{:?}", r.messages)
+        };
+        assert!(b.is_solid());
+        assert!((b.volume().unwrap() - 2.0 * PI).abs() < 1e-9);
     }
 
     #[test]

@@ -9,7 +9,7 @@
 //! locus does not have; here the Options input is a text of words instead: `normal` or
 //! `straight` for the type and `closed` to join the last section back to the first.
 
-use locus_kernel::{Brep, LoftType, NurbsCurve, NurbsSurface};
+use locus_kernel::{Brep, Interval, Line, LoftType, NurbsCurve, NurbsSurface};
 use locus_runtime::{DataType, NodeError, NodeType, Port, Shared};
 
 use super::brep::surface_node;
@@ -18,11 +18,14 @@ use super::brep::surface_node;
 pub const RULED_SURFACE: &str = "surface.ruled_surface";
 /// Id of [`loft`].
 pub const LOFT: &str = "surface.loft";
+/// Id of [`revolution`].
+pub const REVOLUTION: &str = "surface.revolution";
 
 /// Registers Ruled Surface and Loft.
 pub fn register(registry: &mut locus_runtime::NodeRegistry) {
     registry.register(ruled_surface());
     registry.register(loft());
+    registry.register(revolution());
 }
 
 fn valid_nurbs(curve: &locus_kernel::Curve, name: &str) -> Result<NurbsCurve, NodeError> {
@@ -125,6 +128,43 @@ pub fn loft() -> NodeType {
         })
 }
 
+/// Revolution \[RevSrf\]: a profile curve revolved about an axis.
+pub fn revolution() -> NodeType {
+    surface_node(REVOLUTION, "Revolution", "RevSrf", "Freeform")
+        .gh_guid("cdee962f-4202-456b-a1b4-f3ed9aa0dc29")
+        .description(
+            "Revolves a profile curve about an axis line through an angle domain (radians, \
+             counter-clockwise about the line's direction), in exact rational form: each \
+             control point sweeps a circular arc of quadratic pieces up to 90° each. u is the \
+             angle on the domain and v the profile's parameter. The domain must increase by \
+             more than 0 and at most 2π; a zero-length axis is an error.",
+        )
+        .input(Port::new("Curve", "C", DataType::Curve).doc("The profile curve."))
+        .input(
+            Port::new("Axis", "A", DataType::Line)
+                .doc("The revolution axis: the line through its start along its direction."),
+        )
+        .input(
+            Port::new("Domain", "D", DataType::Domain)
+                .default_value(Interval::new(0.0, std::f64::consts::TAU))
+                .doc("The angle domain in radians. Default 0 to 2π (a full turn)."),
+        )
+        .output(Port::new("Surface", "S", DataType::Surface).doc("The surface of revolution."))
+        .lift3(|c: &Shared<locus_kernel::Curve>, axis: &Line, d: &Interval| {
+            let profile = valid_nurbs(c, "C")?;
+            let direction = axis.to - axis.from;
+            if direction.length() == 0.0 || !direction.is_finite() {
+                return Err(NodeError::from("input A: the axis has no direction"));
+            }
+            Ok(Shared::new(NurbsSurface::revolution(
+                &profile,
+                axis.from,
+                direction,
+                *d,
+            )?))
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use locus_kernel::{Circle, Curve, Line, Plane, Point3, SurfaceDirection, Vector3};
@@ -191,6 +231,28 @@ mod tests {
         assert_eq!(s.degree_v(), 2);
         let first = s.isocurve(SurfaceDirection::U, 0.0).unwrap();
         assert!((first.point_at(0.3).to_vector().length() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn revolved_line_is_a_cylinder() {
+        let axis = Line::new(Point3::ORIGIN, Point3::new(0.0, 0.0, 1.0));
+        let r = NodeCall::new(&revolution())
+            .input(DataTree::from_item(line(
+                Point3::new(2.0, 0.0, 0.0),
+                Point3::new(2.0, 0.0, 3.0),
+            )))
+            .input(DataTree::from_item(axis))
+            .run();
+        let Some(Value::Surface(s)) = r.outputs[0].values().next().flatten() else {
+            panic!("{:?}", r.messages)
+        };
+        let area = s.area_properties().unwrap().area;
+        assert!((area - 12.0 * std::f64::consts::PI).abs() < 1e-9, "{area}");
+        let r = NodeCall::new(&revolution())
+            .input(DataTree::from_item(line(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0))))
+            .input(DataTree::from_item(Line::new(Point3::ORIGIN, Point3::ORIGIN)))
+            .run();
+        assert!(error(&r).contains("direction"), "{:?}", r.messages);
     }
 
     #[test]
