@@ -85,8 +85,8 @@ mod tests {
 
     #[test]
     fn an_open_cylinder_and_an_open_box_are_capped() {
-        let tube = Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.0, 2.0).unwrap(), false)
-            .unwrap();
+        let tube =
+            Brep::from_cylinder(&Cylinder::new(Plane::WORLD_XY, 1.0, 2.0).unwrap(), false).unwrap();
         let (capped, count) = tube.cap_planar_holes(1e-9).unwrap();
         assert_eq!(count, 2);
         assert!(capped.is_solid());

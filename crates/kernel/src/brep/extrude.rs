@@ -77,7 +77,9 @@ impl Brep {
         let pieces = split_at_kinks(curve)?;
         let mut faces = Vec::with_capacity(pieces.len() + 1);
         for p in &pieces {
-            faces.push(Brep::from_surface(NurbsSurface::extrusion_to_point(p, apex)?)?);
+            faces.push(Brep::from_surface(NurbsSurface::extrusion_to_point(
+                p, apex,
+            )?)?);
         }
         let closed = curve.start_point().distance(curve.end_point()) <= tolerance;
         if closed
@@ -111,10 +113,15 @@ impl Brep {
                 "the brep is closed: it has no naked edges to extrude".into(),
             ));
         }
-        let mut parts = vec![self.clone(), self.transformed(&Transform::translation(direction))?];
+        let mut parts = vec![
+            self.clone(),
+            self.transformed(&Transform::translation(direction))?,
+        ];
         for e in naked {
             let curve = &self.edges[e].curve;
-            parts.push(Brep::from_surface(NurbsSurface::extrusion(curve, direction)?)?);
+            parts.push(Brep::from_surface(NurbsSurface::extrusion(
+                curve, direction,
+            )?)?);
         }
         join_one(&parts, tolerance, "extrusion")
     }
@@ -138,7 +145,9 @@ impl Brep {
         let mut parts = vec![self.clone()];
         for e in naked {
             let curve = &self.edges[e].curve;
-            parts.push(Brep::from_surface(NurbsSurface::extrusion_to_point(curve, apex)?)?);
+            parts.push(Brep::from_surface(NurbsSurface::extrusion_to_point(
+                curve, apex,
+            )?)?);
         }
         join_one(&parts, tolerance, "extrusion")
     }
@@ -171,8 +180,8 @@ mod tests {
 
     #[test]
     fn a_square_extruded_is_a_closed_box() {
-        let b = Brep::from_curve_extrusion(&unit_square(), Vector3::new(0.0, 0.0, 2.0), TOL)
-            .unwrap();
+        let b =
+            Brep::from_curve_extrusion(&unit_square(), Vector3::new(0.0, 0.0, 2.0), TOL).unwrap();
         assert_eq!(b.faces().len(), 6);
         assert_eq!(b.edges().len(), 12);
         assert_eq!(b.vertices().len(), 8);
@@ -201,7 +210,8 @@ mod tests {
 
     #[test]
     fn open_curves_and_in_plane_directions_are_not_capped() {
-        let line = Curve::from(Polyline::new(vec![Point3::ORIGIN, Point3::new(3.0, 0.0, 0.0)]).unwrap());
+        let line =
+            Curve::from(Polyline::new(vec![Point3::ORIGIN, Point3::new(3.0, 0.0, 0.0)]).unwrap());
         let b = Brep::from_curve_extrusion(&line, Vector3::new(0.0, 0.0, 2.0), TOL).unwrap();
         assert_eq!(b.faces().len(), 1);
         assert!(rel(b.area().unwrap(), 6.0) < 1e-12);
@@ -236,7 +246,9 @@ mod tests {
         assert_eq!(b.faces().len(), 6);
         assert!(rel(b.volume().unwrap(), 24.0) < 1e-12);
         assert!(b.extruded(Vector3::new(0.0, 0.0, 1.0), TOL).is_err());
-        let cone = face.extruded_to_point(Point3::new(1.0, 1.0, 5.0), TOL).unwrap();
+        let cone = face
+            .extruded_to_point(Point3::new(1.0, 1.0, 5.0), TOL)
+            .unwrap();
         assert!(cone.is_solid());
         assert!(rel(cone.volume().unwrap(), 10.0) < 1e-12);
     }

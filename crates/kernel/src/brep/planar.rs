@@ -10,7 +10,9 @@
 //! Containment and crossing tests use the sampled polygons, [`SAMPLES_PER_SPAN`] points per
 //! span of each curve.
 
-use crate::brep::builders::{Builder, check_no_crossings, fit_plane, point_in_polygon, signed_area};
+use crate::brep::builders::{
+    Builder, check_no_crossings, fit_plane, point_in_polygon, signed_area,
+};
 use crate::brep::{Brep, LoopKind};
 use crate::{Curve, Error, Interval, NurbsCurve, NurbsSurface, Plane, Point3, Result, Transform};
 
@@ -116,7 +118,9 @@ fn check_chained(curves: &[NurbsCurve], tolerance: f64) -> Result<()> {
     }
     let n = curves.len();
     for k in 0..n {
-        let gap = curves[k].end_point().distance(curves[(k + 1) % n].start_point());
+        let gap = curves[k]
+            .end_point()
+            .distance(curves[(k + 1) % n].start_point());
         if gap.is_nan() || gap > tolerance {
             return Err(Error::InvalidInput(if n == 1 {
                 format!("the boundary curve is not closed (its ends are {gap} apart)")
@@ -195,7 +199,11 @@ impl Brep {
 
         let mut trims: Vec<Vec<NurbsCurve>> = Vec::with_capacity(oriented.len());
         for l in &oriented {
-            trims.push(l.iter().map(|c| to_trim(c, &to_plane)).collect::<Result<_>>()?);
+            trims.push(
+                l.iter()
+                    .map(|c| to_trim(c, &to_plane))
+                    .collect::<Result<_>>()?,
+            );
         }
         let (mut u0, mut u1, mut v0, mut v1) = (
             f64::INFINITY,
@@ -315,7 +323,8 @@ impl Brep {
                 })
                 .collect();
             let areas: Vec<f64> = polygons.iter().map(|p| signed_area(p).abs()).collect();
-            let inside = |a: usize, b: usize| a != b && point_in_polygon(polygons[a][0], &polygons[b]);
+            let inside =
+                |a: usize, b: usize| a != b && point_in_polygon(polygons[a][0], &polygons[b]);
             let depth: Vec<usize> = (0..g.len())
                 .map(|a| (0..g.len()).filter(|&b| inside(a, b)).count())
                 .collect();
@@ -381,9 +390,8 @@ mod tests {
     fn nested_curves_make_faces_with_holes() {
         // A 10-square with a circular hole of radius 2, and inside the hole an island square
         // of side 1, plus a separate square elsewhere and an open curve.
-        let open = Curve::from(
-            Polyline::new(vec![Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0)]).unwrap(),
-        );
+        let open =
+            Curve::from(Polyline::new(vec![Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0)]).unwrap());
         let curves = [
             square(0.0, 0.0, 10.0, 0.0),
             circle(5.0, 5.0, 2.0),

@@ -203,7 +203,9 @@ mod tests {
         let c = circle(0.0, 1.0);
         assert!(NurbsSurface::loft(std::slice::from_ref(&c), LoftType::Normal, false).is_err());
         assert!(NurbsSurface::loft(&[c.clone(), c.clone()], LoftType::Normal, false).is_err());
-        assert!(NurbsSurface::loft(&[c.clone(), circle(1.0, 1.0)], LoftType::Normal, true).is_err());
+        assert!(
+            NurbsSurface::loft(&[c.clone(), circle(1.0, 1.0)], LoftType::Normal, true).is_err()
+        );
     }
 
     proptest! {

@@ -88,8 +88,9 @@ mod tests {
         let line = Line::new(Point3::new(1.0, 0.0, 0.0), Point3::new(1.0, 0.0, 2.0))
             .to_nurbs()
             .unwrap();
-        let s = NurbsSurface::revolution(&line, Point3::ORIGIN, Vector3::Z, Interval::new(0.0, TAU))
-            .unwrap();
+        let s =
+            NurbsSurface::revolution(&line, Point3::ORIGIN, Vector3::Z, Interval::new(0.0, TAU))
+                .unwrap();
         for k in 0..=16 {
             let u = TAU * k as f64 / 16.0;
             let p = s.point_at(u, 0.5);
@@ -103,9 +104,13 @@ mod tests {
         let area = s.area_properties().unwrap().area;
         assert!((area - 4.0 * PI).abs() < 1e-9, "{area}");
         // A quarter turn has a quarter of the area.
-        let quarter =
-            NurbsSurface::revolution(&line, Point3::ORIGIN, Vector3::Z, Interval::new(0.0, PI / 2.0))
-                .unwrap();
+        let quarter = NurbsSurface::revolution(
+            &line,
+            Point3::ORIGIN,
+            Vector3::Z,
+            Interval::new(0.0, PI / 2.0),
+        )
+        .unwrap();
         assert!((quarter.area_properties().unwrap().area - PI).abs() < 1e-9);
     }
 

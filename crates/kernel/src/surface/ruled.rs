@@ -137,7 +137,10 @@ mod tests {
         let (a, b) = (arc_curve(), cubic());
         let s = NurbsSurface::ruled(&a, &b).unwrap();
         assert_eq!((s.degree_u(), s.degree_v()), (3, 1));
-        assert_eq!((s.domain_u(), s.domain_v()), (Interval::UNIT, Interval::UNIT));
+        assert_eq!(
+            (s.domain_u(), s.domain_v()),
+            (Interval::UNIT, Interval::UNIT)
+        );
         assert_curves_match(&s.isocurve(SurfaceDirection::U, 0.0).unwrap(), &a);
         assert_curves_match(&s.isocurve(SurfaceDirection::U, 1.0).unwrap(), &b);
         // Rulings are straight: every point of a ruling lies on the line between its ends

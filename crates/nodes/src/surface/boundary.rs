@@ -55,53 +55,58 @@ pub fn cap_holes() -> NodeType {
 
 /// Boundary Surfaces \[Boundary\]: planar faces from closed planar curves.
 pub fn boundary_surfaces() -> NodeType {
-    surface_node(BOUNDARY_SURFACES, "Boundary Surfaces", "Boundary", "Freeform")
-        .gh_guid("d51e9b65-aa4e-4fd6-976c-cef35d421d05")
-        .description(
-            "Creates planar faces from a list of closed planar curves. Curves in the same \
+    surface_node(
+        BOUNDARY_SURFACES,
+        "Boundary Surfaces",
+        "Boundary",
+        "Freeform",
+    )
+    .gh_guid("d51e9b65-aa4e-4fd6-976c-cef35d421d05")
+    .description(
+        "Creates planar faces from a list of closed planar curves. Curves in the same \
              plane (within 0.001) are nested: a curve inside an even number of others bounds \
              a face, and one inside an odd number is a hole in the smallest curve around it, \
              so a ring of two circles gives an annulus. Each face is a trimmed plane whose \
              trims are the curves themselves (exact), with one edge per kink-free piece of \
              each curve; faces come out in the order of their outer curves. Open or \
              non-planar curves are left out with a warning.",
-        )
-        .input(
-            Port::new("Edges", "E", DataType::Curve)
-                .list()
-                .doc("The boundary curves: closed and planar; nulls are left out."),
-        )
-        .output(
-            Port::new("Surfaces", "S", DataType::Brep)
-                .list()
-                .doc("The planar faces, each a one-face B-rep."),
-        )
-        .solve(|s| {
-            let list = s.list::<Shared<locus_kernel::Curve>>(0)?;
-            let mut curves = Vec::with_capacity(list.len());
-            let mut left_out = Vec::new();
-            for (k, c) in list.iter().enumerate() {
-                match c {
-                    Some(c) if c.is_valid() => curves.push((k, (**c).clone())),
-                    Some(_) => left_out.push(format!("curve {k} is not valid")),
-                    None => left_out.push(format!("item {k} is null")),
-                }
+    )
+    .input(
+        Port::new("Edges", "E", DataType::Curve)
+            .list()
+            .doc("The boundary curves: closed and planar; nulls are left out."),
+    )
+    .output(
+        Port::new("Surfaces", "S", DataType::Brep)
+            .list()
+            .doc("The planar faces, each a one-face B-rep."),
+    )
+    .solve(|s| {
+        let list = s.list::<Shared<locus_kernel::Curve>>(0)?;
+        let mut curves = Vec::with_capacity(list.len());
+        let mut left_out = Vec::new();
+        for (k, c) in list.iter().enumerate() {
+            match c {
+                Some(c) if c.is_valid() => curves.push((k, (**c).clone())),
+                Some(_) => left_out.push(format!("curve {k} is not valid")),
+                None => left_out.push(format!("item {k} is null")),
             }
-            let only: Vec<locus_kernel::Curve> = curves.iter().map(|(_, c)| c.clone()).collect();
-            let (faces, failed) = Brep::planar_regions(&only, MODEL_TOLERANCE)?;
-            for (i, e) in failed {
-                left_out.push(format!("curve {}: {e}", curves[i].0));
-            }
-            for w in left_out {
-                s.warning(format!("input E: {w}; left out"));
-            }
-            let faces = faces
-                .into_iter()
-                .map(|b| Some(Value::Brep(Shared::new(b))))
-                .collect();
-            s.set_list_values(0, faces);
-            Ok(())
-        })
+        }
+        let only: Vec<locus_kernel::Curve> = curves.iter().map(|(_, c)| c.clone()).collect();
+        let (faces, failed) = Brep::planar_regions(&only, MODEL_TOLERANCE)?;
+        for (i, e) in failed {
+            left_out.push(format!("curve {}: {e}", curves[i].0));
+        }
+        for w in left_out {
+            s.warning(format!("input E: {w}; left out"));
+        }
+        let faces = faces
+            .into_iter()
+            .map(|b| Some(Value::Brep(Shared::new(b))))
+            .collect();
+        s.set_list_values(0, faces);
+        Ok(())
+    })
 }
 
 #[cfg(test)]

@@ -29,9 +29,8 @@ pub fn register(registry: &mut locus_runtime::NodeRegistry) {
 }
 
 fn base_port() -> Port {
-    Port::new("Base", "B", DataType::Generic).doc(
-        "Profile curve (line, arc, circle, polyline or NURBS curve), surface or open B-rep.",
-    )
+    Port::new("Base", "B", DataType::Generic)
+        .doc("Profile curve (line, arc, circle, polyline or NURBS curve), surface or open B-rep.")
 }
 
 /// What an extrusion starts from.
@@ -118,8 +117,7 @@ pub fn extrude_point() -> NodeType {
         )
         .input(base_port())
         .input(
-            Port::new("Point", "P", DataType::Point)
-                .doc("The tip of the extrusion. No default."),
+            Port::new("Point", "P", DataType::Point).doc("The tip of the extrusion. No default."),
         )
         .output(Port::new("Extrusion", "E", DataType::Brep).doc("The extrusion, a B-rep."))
         .solve(|s| {
@@ -179,7 +177,11 @@ mod tests {
 
     #[test]
     fn extruded_square_is_a_closed_box_of_volume_two() {
-        let r = run(extrude(), square(), Value::Vector(Vector3::new(0.0, 0.0, 2.0)));
+        let r = run(
+            extrude(),
+            square(),
+            Value::Vector(Vector3::new(0.0, 0.0, 2.0)),
+        );
         let b = brep(&r);
         assert!(b.is_solid());
         assert_eq!(b.faces().len(), 6);
@@ -189,7 +191,11 @@ mod tests {
     #[test]
     fn extruded_surface_and_circle() {
         let disc = Circle::new(Plane::WORLD_XY, 1.0).unwrap();
-        let r = run(extrude(), Value::Circle(disc), Value::Vector(Vector3::new(0.0, 0.0, 1.0)));
+        let r = run(
+            extrude(),
+            Value::Circle(disc),
+            Value::Vector(Vector3::new(0.0, 0.0, 1.0)),
+        );
         let b = brep(&r);
         assert!(b.is_solid());
         assert!((b.volume().unwrap() - std::f64::consts::PI).abs() < 1e-9);
@@ -198,14 +204,22 @@ mod tests {
             Point3::ORIGIN,
             Point3::new(10.0, 0.0, 0.0),
         ));
-        let b = brep(&run(extrude(), line, Value::Vector(Vector3::new(0.0, 3.0, 0.0))));
+        let b = brep(&run(
+            extrude(),
+            line,
+            Value::Vector(Vector3::new(0.0, 3.0, 0.0)),
+        ));
         assert!(!b.is_solid());
         assert!((b.area().unwrap() - 30.0).abs() < 1e-12);
     }
 
     #[test]
     fn extrude_point_makes_a_pyramid() {
-        let r = run(extrude_point(), square(), Value::Point(Point3::new(0.0, 0.0, 3.0)));
+        let r = run(
+            extrude_point(),
+            square(),
+            Value::Point(Point3::new(0.0, 0.0, 3.0)),
+        );
         let b = brep(&r);
         assert!(b.is_solid());
         assert!((b.volume().unwrap() - 1.0).abs() < 1e-12);

@@ -50,10 +50,12 @@ pub fn ruled_surface() -> NodeType {
         .input(Port::new("Curve A", "A", DataType::Curve).doc("The first curve (v = 0)."))
         .input(Port::new("Curve B", "B", DataType::Curve).doc("The second curve (v = 1)."))
         .output(Port::new("Surface", "S", DataType::Surface).doc("The ruled surface."))
-        .lift2(|a: &Shared<locus_kernel::Curve>, b: &Shared<locus_kernel::Curve>| {
-            let (a, b) = (valid_nurbs(a, "A")?, valid_nurbs(b, "B")?);
-            Ok(Shared::new(NurbsSurface::ruled(&a, &b)?))
-        })
+        .lift2(
+            |a: &Shared<locus_kernel::Curve>, b: &Shared<locus_kernel::Curve>| {
+                let (a, b) = (valid_nurbs(a, "A")?, valid_nurbs(b, "B")?);
+                Ok(Shared::new(NurbsSurface::ruled(&a, &b)?))
+            },
+        )
 }
 
 /// The loft type and closure from the Options text.
@@ -150,19 +152,18 @@ pub fn revolution() -> NodeType {
                 .doc("The angle domain in radians. Default 0 to 2π (a full turn)."),
         )
         .output(Port::new("Surface", "S", DataType::Surface).doc("The surface of revolution."))
-        .lift3(|c: &Shared<locus_kernel::Curve>, axis: &Line, d: &Interval| {
-            let profile = valid_nurbs(c, "C")?;
-            let direction = axis.to - axis.from;
-            if direction.length() == 0.0 || !direction.is_finite() {
-                return Err(NodeError::from("input A: the axis has no direction"));
-            }
-            Ok(Shared::new(NurbsSurface::revolution(
-                &profile,
-                axis.from,
-                direction,
-                *d,
-            )?))
-        })
+        .lift3(
+            |c: &Shared<locus_kernel::Curve>, axis: &Line, d: &Interval| {
+                let profile = valid_nurbs(c, "C")?;
+                let direction = axis.to - axis.from;
+                if direction.length() == 0.0 || !direction.is_finite() {
+                    return Err(NodeError::from("input A: the axis has no direction"));
+                }
+                Ok(Shared::new(NurbsSurface::revolution(
+                    &profile, axis.from, direction, *d,
+                )?))
+            },
+        )
 }
 
 #[cfg(test)]
@@ -192,7 +193,10 @@ mod tests {
     #[test]
     fn ruled_surface_between_two_lines_is_a_rectangle() {
         let r = NodeCall::new(&ruled_surface())
-            .input(DataTree::from_item(line(Point3::ORIGIN, Point3::new(4.0, 0.0, 0.0))))
+            .input(DataTree::from_item(line(
+                Point3::ORIGIN,
+                Point3::new(4.0, 0.0, 0.0),
+            )))
             .input(DataTree::from_item(line(
                 Point3::new(0.0, 3.0, 0.0),
                 Point3::new(4.0, 3.0, 0.0),
@@ -202,13 +206,19 @@ mod tests {
             panic!("{:?}", r.messages)
         };
         assert!((s.area_properties().unwrap().area - 12.0).abs() < 1e-12);
-        assert!(s.point_at(1.0, 1.0).abs_diff_eq(Point3::new(4.0, 3.0, 0.0), 1e-12));
+        assert!(
+            s.point_at(1.0, 1.0)
+                .abs_diff_eq(Point3::new(4.0, 3.0, 0.0), 1e-12)
+        );
     }
 
     #[test]
     fn straight_loft_of_two_circles_is_a_cylinder() {
         let r = NodeCall::new(&loft())
-            .input(DataTree::from_list(vec![circle(0.0, 1.0), circle(2.0, 1.0)]))
+            .input(DataTree::from_list(vec![
+                circle(0.0, 1.0),
+                circle(2.0, 1.0),
+            ]))
             .input(DataTree::from_item("straight".to_string()))
             .run();
         let Some(Value::Brep(b)) = r.outputs[0].values().next().flatten() else {
@@ -249,8 +259,14 @@ mod tests {
         let area = s.area_properties().unwrap().area;
         assert!((area - 12.0 * std::f64::consts::PI).abs() < 1e-9, "{area}");
         let r = NodeCall::new(&revolution())
-            .input(DataTree::from_item(line(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0))))
-            .input(DataTree::from_item(Line::new(Point3::ORIGIN, Point3::ORIGIN)))
+            .input(DataTree::from_item(line(
+                Point3::ORIGIN,
+                Point3::new(1.0, 0.0, 0.0),
+            )))
+            .input(DataTree::from_item(Line::new(
+                Point3::ORIGIN,
+                Point3::ORIGIN,
+            )))
             .run();
         assert!(error(&r).contains("direction"), "{:?}", r.messages);
     }
@@ -262,7 +278,10 @@ mod tests {
             .run();
         assert!(error(&r).contains("at least"), "{:?}", r.messages);
         let r = NodeCall::new(&loft())
-            .input(DataTree::from_list(vec![circle(0.0, 1.0), circle(1.0, 1.0)]))
+            .input(DataTree::from_list(vec![
+                circle(0.0, 1.0),
+                circle(1.0, 1.0),
+            ]))
             .input(DataTree::from_item("tight".to_string()))
             .run();
         assert!(error(&r).contains("tight"));
