@@ -24,6 +24,9 @@ const MAX_SAMPLES_PER_CURVE: usize = 4096;
 /// The most boundary curves [`Brep::planar_regions`] takes.
 pub const MAX_BOUNDARY_CURVES: usize = 10_000;
 
+/// The boundary curves [`Brep::planar_regions`] left out: each curve's index and why.
+pub type FailedBoundaries = Vec<(usize, Error)>;
+
 /// Points along the curve from its start, without its end point.
 fn samples(curve: &NurbsCurve) -> Vec<Point3> {
     let n = (curve.span_count() * SAMPLES_PER_SPAN).clamp(SAMPLES_PER_SPAN, MAX_SAMPLES_PER_CURVE);
@@ -257,7 +260,7 @@ impl Brep {
     pub fn planar_regions(
         curves: &[Curve],
         tolerance: f64,
-    ) -> Result<(Vec<Brep>, Vec<(usize, Error)>)> {
+    ) -> Result<(Vec<Brep>, FailedBoundaries)> {
         if !tolerance.is_finite() || tolerance < 0.0 {
             return Err(Error::InvalidInput(format!(
                 "tolerance must be finite and not negative, got {tolerance}"
@@ -328,7 +331,7 @@ impl Brep {
             let depth: Vec<usize> = (0..g.len())
                 .map(|a| (0..g.len()).filter(|&b| inside(a, b)).count())
                 .collect();
-            for outer in (0..g.len()).filter(|&a| depth[a] % 2 == 0) {
+            for outer in (0..g.len()).filter(|&a| depth[a].is_multiple_of(2)) {
                 let holes = (0..g.len()).filter(|&h| {
                     depth[h] == depth[outer] + 1
                         && inside(h, outer)
