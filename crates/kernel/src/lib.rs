@@ -84,4 +84,5 @@ pub use crate::surface::curvature::SurfaceCurvature;
 pub use crate::surface::derivatives::SurfaceDerivatives;
 pub use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 pub use crate::surface::forms::{Cone, Cylinder, Sphere};
+pub use crate::surface::loft::{LoftType, MAX_LOFT_SECTIONS};
 pub use crate::transform::Transform;

@@ -10,12 +10,12 @@ use crate::{
 
 /// Assembles a B-rep part by part; [`Builder::finish`] links the topology.
 #[derive(Debug, Default)]
-struct Builder {
-    brep: Brep,
+pub(crate) struct Builder {
+    pub(crate) brep: Brep,
 }
 
 impl Builder {
-    fn vertex(&mut self, point: Point3) -> usize {
+    pub(crate) fn vertex(&mut self, point: Point3) -> usize {
         self.brep.vertices.push(BrepVertex {
             point,
             edges: Vec::new(),
@@ -23,7 +23,7 @@ impl Builder {
         self.brep.vertices.len() - 1
     }
 
-    fn edge(&mut self, curve: NurbsCurve, vertices: [usize; 2]) -> usize {
+    pub(crate) fn edge(&mut self, curve: NurbsCurve, vertices: [usize; 2]) -> usize {
         self.brep.edges.push(BrepEdge {
             curve,
             vertices,
@@ -32,7 +32,7 @@ impl Builder {
         self.brep.edges.len() - 1
     }
 
-    fn face(&mut self, surface: NurbsSurface, reversed: bool) -> usize {
+    pub(crate) fn face(&mut self, surface: NurbsSurface, reversed: bool) -> usize {
         self.brep.faces.push(BrepFace {
             surface,
             loops: Vec::new(),
@@ -41,7 +41,7 @@ impl Builder {
         self.brep.faces.len() - 1
     }
 
-    fn start_loop(&mut self, face: usize, kind: LoopKind) -> usize {
+    pub(crate) fn start_loop(&mut self, face: usize, kind: LoopKind) -> usize {
         self.brep.loops.push(BrepLoop {
             face,
             kind,
@@ -52,7 +52,7 @@ impl Builder {
         index
     }
 
-    fn trim(
+    pub(crate) fn trim(
         &mut self,
         loop_index: usize,
         curve: NurbsCurve,
@@ -72,7 +72,7 @@ impl Builder {
         self.brep.loops[loop_index].trims.push(index);
     }
 
-    fn finish(mut self) -> Brep {
+    pub(crate) fn finish(mut self) -> Brep {
         self.brep.link();
         self.brep
     }
@@ -606,7 +606,7 @@ fn clean_polygon(points: &[Point3]) -> Result<Vec<Point3>> {
 
 /// The plane of a polygon: Newell's normal (oriented by the polygon's winding), origin at the
 /// first point, x axis along the first segment.
-fn fit_plane(points: &[Point3]) -> Result<Plane> {
+pub(crate) fn fit_plane(points: &[Point3]) -> Result<Plane> {
     let n = points.len();
     let mut normal = Vector3::ZERO;
     let c = points[0];
@@ -629,7 +629,7 @@ fn fit_plane(points: &[Point3]) -> Result<Plane> {
 }
 
 /// The signed area of a polygon in the plane (positive when counter-clockwise).
-fn signed_area(polygon: &[(f64, f64)]) -> f64 {
+pub(crate) fn signed_area(polygon: &[(f64, f64)]) -> f64 {
     let n = polygon.len();
     let (u0, v0) = polygon[0];
     let mut twice = 0.0;
@@ -641,7 +641,7 @@ fn signed_area(polygon: &[(f64, f64)]) -> f64 {
 }
 
 /// Whether `p` lies inside the polygon (even-odd rule).
-fn point_in_polygon(p: (f64, f64), polygon: &[(f64, f64)]) -> bool {
+pub(crate) fn point_in_polygon(p: (f64, f64), polygon: &[(f64, f64)]) -> bool {
     let n = polygon.len();
     let mut inside = false;
     for i in 0..n {
@@ -658,7 +658,7 @@ fn point_in_polygon(p: (f64, f64), polygon: &[(f64, f64)]) -> bool {
 
 /// Rejects polygons that cross themselves or each other (segments that intersect other than
 /// at the shared vertex of neighbours).
-fn check_no_crossings(loops: &[Vec<(f64, f64)>]) -> Result<()> {
+pub(crate) fn check_no_crossings(loops: &[Vec<(f64, f64)>]) -> Result<()> {
     // (start, end, loop, index within the loop)
     type Segment = ((f64, f64), (f64, f64), usize, usize);
     let segments: Vec<Segment> = loops

@@ -20,9 +20,12 @@
 
 pub(crate) mod bounding_box;
 pub(crate) mod builders;
+pub(crate) mod cap;
+pub(crate) mod extrude;
 pub(crate) mod join;
 pub(crate) mod mass;
 pub(crate) mod parts;
+pub(crate) mod planar;
 
 use crate::surface::direction::SurfaceSide;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result, Transform};

@@ -17,7 +17,10 @@ pub(crate) mod edit;
 pub(crate) mod forms;
 pub(crate) mod grid;
 pub(crate) mod isocurve;
+pub(crate) mod loft;
 pub(crate) mod normal;
+pub(crate) mod revolution;
+pub(crate) mod ruled;
 
 use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
 use crate::surface::direction::SurfaceDirection;

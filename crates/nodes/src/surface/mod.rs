@@ -3,12 +3,15 @@
 //! Surface, Isocurve), boxes and B-reps.
 
 pub mod analysis;
+pub mod boundary;
 pub mod bounding_box;
 pub mod box_corners;
 pub mod box_nodes;
 pub mod brep;
 pub mod brep_analysis;
+pub mod extrusion;
 pub mod freeform;
+pub mod lofting;
 pub mod primitive;
 pub mod util;
 
@@ -18,6 +21,9 @@ use locus_runtime::NodeRegistry;
 pub fn register(registry: &mut NodeRegistry) {
     primitive::register(registry);
     freeform::register(registry);
+    extrusion::register(registry);
+    lofting::register(registry);
+    boundary::register(registry);
     analysis::register(registry);
     util::register(registry);
     box_nodes::register(registry);

@@ -18,6 +18,7 @@
 pub mod basis;
 pub(crate) mod batch;
 pub(crate) mod bounding_box;
+pub(crate) mod compatible;
 pub(crate) mod create;
 pub(crate) mod edit;
 pub(crate) mod interpolate;
