@@ -17,68 +17,7 @@
 //!   length of its own domain.
 
 use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
-use crate::curve::nurbs::basis::MAX_DEGREE;
 use crate::{Curve, Error, Interval, Line, NurbsCurve, Point3, Polyline, Result};
-
-impl NurbsCurve {
-    /// The same curve with degree `degree` (at least the current one, at most
-    /// [`MAX_DEGREE`]): the clamped curve is cut into its Bézier pieces, each is raised in
-    /// homogeneous form (`Q_i = i/(p+1) P_{i−1} + (1 − i/(p+1)) P_i`, repeated), and the pieces
-    /// are put back together with interior knots of multiplicity `degree`. The shape and the
-    /// domain do not change. The same degree gives a clone.
-    ///
-    /// # Errors
-    /// [`Error::InvalidDegree`] when `degree` is below the curve's degree or above
-    /// [`MAX_DEGREE`].
-    pub fn elevated(&self, degree: usize) -> Result<Self> {
-        if degree < self.degree() || degree > MAX_DEGREE {
-            return Err(Error::InvalidDegree {
-                degree,
-                reason: format!(
-                    "a curve of degree {} can be raised to degrees {} to {MAX_DEGREE}",
-                    self.degree(),
-                    self.degree()
-                ),
-            });
-        }
-        if degree == self.degree() {
-            return Ok(self.clone());
-        }
-        let clamped = self.clamped();
-        let spans: Vec<usize> = clamped.span_indices().collect();
-        let mut cvs: Vec<[f64; 4]> = Vec::with_capacity(spans.len() * degree + 1);
-        let mut knots = Vec::with_capacity((spans.len() + 1) * degree);
-        for (k, &span) in spans.iter().enumerate() {
-            let piece = clamped.bezier_piece(span);
-            let mut points = piece.homogeneous().to_vec();
-            while points.len() < degree + 1 {
-                points = elevate_once(&points);
-            }
-            let skip = usize::from(k > 0);
-            cvs.extend_from_slice(&points[skip..]);
-            knots.extend(std::iter::repeat_n(piece.a, degree));
-        }
-        knots.extend(std::iter::repeat_n(clamped.domain().t1, degree));
-        Self::from_homogeneous(degree, &cvs, knots)
-    }
-}
-
-/// One degree elevation of a Bézier curve's homogeneous control points.
-fn elevate_once(points: &[[f64; 4]]) -> Vec<[f64; 4]> {
-    let n = points.len(); // p + 1
-    let mut out = Vec::with_capacity(n + 1);
-    out.push(points[0]);
-    for i in 1..n {
-        let a = i as f64 / n as f64;
-        let mut q = [0.0; 4];
-        for (c, v) in q.iter_mut().enumerate() {
-            *v = a * points[i - 1][c] + (1.0 - a) * points[i][c];
-        }
-        out.push(q);
-    }
-    out.push(points[n - 1]);
-    out
-}
 
 /// One piece of a chain: the index of a curve and whether it runs backwards.
 #[derive(Clone, Copy, Debug)]
@@ -328,6 +267,7 @@ fn join_chain(curves: &[Curve], pieces: &[Piece], closed: bool) -> Result<Curve>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::curve::nurbs::basis::MAX_DEGREE;
     use crate::geometry::tolerance::DOCUMENT_TOLERANCE;
     use crate::{Arc, Circle, Interval, Line, Plane, Vector3};
 
