@@ -197,7 +197,7 @@ fn check_events(
         // A grazing crossing (at an angle below OCCT's angular tolerance) is listed as
         // tangential and not crossing; the kernel reports whether the sign changes.
         if let Some(crossing) = w["crossing"].as_bool().filter(|_| !tangential) {
-            failures.check(hit.tangential == !crossing, || {
+            failures.check(hit.tangential != crossing, || {
                 format!(
                     "{id} t = {t}: crossing is {}, expected {crossing}",
                     !hit.tangential

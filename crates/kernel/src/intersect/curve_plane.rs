@@ -249,7 +249,7 @@ fn polish(mut t: f64, a: f64, b: f64, touching: bool, f: impl Fn(f64) -> [f64; 3
         }
         let next = (t - g / dg).clamp(a, b);
         let value = f(next);
-        if !(value[0].abs() <= current[0].abs()) || next == t {
+        if value[0].is_nan() || value[0].abs() > current[0].abs() || next == t {
             break;
         }
         t = next;

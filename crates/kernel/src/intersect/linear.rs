@@ -16,12 +16,14 @@ pub fn line_line(a: &Line, b: &Line) -> Option<(f64, f64)> {
     let (da, db) = (a.direction(), b.direction());
     let c = b.from - a.from;
     let (aa, bb, ab) = (da.dot(da), db.dot(db), da.dot(db));
-    if !(aa > 0.0 && bb > 0.0) || !aa.is_finite() || !bb.is_finite() {
+    let usable = aa.is_finite() && bb.is_finite() && aa > 0.0 && bb > 0.0;
+    if !usable {
         return None;
     }
     let det = aa * bb - ab * ab;
     let sine_squared = da.cross(db).length_squared() / (aa * bb);
-    if !(sine_squared > ZERO_TOLERANCE * ZERO_TOLERANCE) || !det.is_finite() {
+    let parallel = sine_squared.is_nan() || sine_squared <= ZERO_TOLERANCE * ZERO_TOLERANCE;
+    if parallel || !det.is_finite() {
         return None;
     }
     let (ca, cb) = (da.dot(c), db.dot(c));
@@ -65,7 +67,7 @@ pub fn plane_plane_plane(a: &Plane, b: &Plane, c: &Plane) -> Option<Point3> {
     let (na, nb, nc) = (a.z_axis, b.z_axis, c.z_axis);
     let det = na.dot(nb.cross(nc));
     let scale = na.length() * nb.length() * nc.length();
-    if !(det.abs() > ZERO_TOLERANCE * scale) || !det.is_finite() {
+    if !det.is_finite() || det.abs() <= ZERO_TOLERANCE * scale {
         return None;
     }
     let (da, db, dc) = (

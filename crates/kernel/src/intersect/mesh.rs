@@ -41,7 +41,7 @@ fn ray_triangle(start: Point3, d: Vector3, p0: Point3, p1: Point3, p2: Point3) -
     let h = d.cross(e2);
     let det = e1.dot(h);
     let scale = e1.length() * e2.length() * d.length();
-    if !(det.abs() > 1e-14 * scale) {
+    if !det.is_finite() || det.abs() <= 1e-14 * scale {
         return None;
     }
     let inv = 1.0 / det;
