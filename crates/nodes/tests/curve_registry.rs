@@ -2,7 +2,7 @@
 //! category holds no node that is not listed here.
 
 use locus_nodes::curve::{
-    analysis, division, primitive, primitive_more, primitive_rect, spline, util,
+    analysis, division, edit, primitive, primitive_more, primitive_rect, spline, util,
 };
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
@@ -45,6 +45,9 @@ fn curve_ids_are_registered() {
         primitive_more::CURVE_MIDDLE,
         primitive_rect::RECTANGLE_2PT,
         primitive_rect::RECTANGLE_3PT,
+        edit::JOIN_CURVES,
+        edit::EXPLODE,
+        edit::OFFSET_CURVE,
     ];
     for id in ids {
         let t = registry
