@@ -10,7 +10,7 @@ use crate::graph_file::RunLimits;
 use crate::write_file::write_bytes_atomically;
 
 /// The scene of the named outputs of an evaluated graph that `--output` selects.
-fn scene(evaluator: &Evaluator, limits: &RunLimits) -> Scene {
+pub(crate) fn scene(evaluator: &Evaluator, limits: &RunLimits) -> Scene {
     let mut scene = Scene::new();
     let settings = Tessellation::default();
     for (name, tree) in evaluator.outputs().filter(|(name, _)| limits.selects(name)) {

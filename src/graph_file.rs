@@ -76,20 +76,8 @@ pub(crate) enum LoadError {
 impl LoadError {
     /// Prints the problem to stderr.
     pub(crate) fn report(&self, path: &Path) {
-        match self {
-            LoadError::Io(e) => eprintln!("locus: cannot read {}: {e}", path.display()),
-            LoadError::Diagnostics(ds) => {
-                let file = path.display().to_string();
-                for d in ds {
-                    let text = d.display_in(&file).to_string();
-                    eprintln!("{}", render::for_stream(&text, &std::io::stderr()));
-                }
-                let errors = ds.iter().filter(|d| d.is_error()).count();
-                eprintln!(
-                    "locus: {file}: {errors} error{} found, the graph was not run",
-                    if errors == 1 { "" } else { "s" }
-                );
-            }
+        for line in self.lines(path) {
+            eprintln!("{}", render::for_stream(&line, &std::io::stderr()));
         }
     }
 }
@@ -121,8 +109,53 @@ pub(crate) fn evaluator(checked: &Checked, threads: Option<usize>) -> Result<Eva
     Ok(evaluator)
 }
 
-/// Reads, checks and prepares a graph for evaluation: threads, limits and the inputs of
-/// `--set` applied, `--output` names checked. Problems are printed and become the exit code.
+/// Why a graph could not be made ready to run: the exit code, and the lines that say why (each
+/// as it would be printed, without the terminal's escaping).
+pub(crate) struct Refusal {
+    pub(crate) code: u8,
+    pub(crate) lines: Vec<String>,
+}
+
+impl Refusal {
+    fn new(code: u8, line: String) -> Self {
+        Refusal {
+            code,
+            lines: vec![line],
+        }
+    }
+
+    /// Prints the lines to stderr and gives the exit code.
+    pub(crate) fn report(self) -> u8 {
+        for line in &self.lines {
+            eprintln!("{}", render::for_stream(line, &std::io::stderr()));
+        }
+        self.code
+    }
+}
+
+impl LoadError {
+    /// The lines that say what is wrong, as [`LoadError::report`] prints them.
+    fn lines(&self, path: &Path) -> Vec<String> {
+        match self {
+            LoadError::Io(e) => vec![format!("locus: cannot read {}: {e}", path.display())],
+            LoadError::Diagnostics(ds) => {
+                let file = path.display().to_string();
+                let mut lines: Vec<String> =
+                    ds.iter().map(|d| d.display_in(&file).to_string()).collect();
+                let errors = ds.iter().filter(|d| d.is_error()).count();
+                lines.push(format!(
+                    "locus: {file}: {errors} error{} found, the graph was not run",
+                    if errors == 1 { "" } else { "s" }
+                ));
+                lines
+            }
+        }
+    }
+}
+
+/// Reads, checks and prepares a graph file for `locus run`, `locus view` and `locus render`:
+/// thread count, limits, `--output` names checked and `--set` values given. Problems are
+/// printed to stderr; the error is the exit code.
 pub(crate) fn prepared(
     registry: &NodeRegistry,
     path: &Path,
@@ -130,58 +163,53 @@ pub(crate) fn prepared(
     threads: Option<usize>,
     run_limits: &RunLimits,
 ) -> Result<Evaluator, u8> {
-    let loaded = match load(registry, path) {
-        Ok(l) => l,
-        Err(e) => {
-            e.report(path);
-            return Err(EXIT_BAD_GRAPH);
-        }
-    };
+    prepare(registry, path, sets, threads, run_limits).map_err(Refusal::report)
+}
+
+/// As [`prepared`], with the problems given back instead of printed (the checker's warnings
+/// are printed to stderr either way).
+pub(crate) fn prepare(
+    registry: &NodeRegistry,
+    path: &Path,
+    sets: &[String],
+    threads: Option<usize>,
+    run_limits: &RunLimits,
+) -> Result<Evaluator, Refusal> {
+    let loaded = load(registry, path).map_err(|e| Refusal {
+        code: EXIT_BAD_GRAPH,
+        lines: e.lines(path),
+    })?;
     let file = path.display().to_string();
     for w in &loaded.checked.warnings {
         let text = w.display_in(&file).to_string();
         eprintln!("{}", render::for_stream(&text, &std::io::stderr()));
     }
-    let mut evaluator = match evaluator(&loaded.checked, threads) {
-        Ok(e) => e,
-        Err(e) => {
-            eprintln!("locus: {e}");
-            return Err(EXIT_USAGE);
-        }
-    };
+    let usage = |e: String| Refusal::new(EXIT_USAGE, format!("locus: {e}"));
+    let mut evaluator = evaluator(&loaded.checked, threads).map_err(usage)?;
     crate::progress::attach(&mut evaluator, run_limits.quiet);
-    match run_limits.limits() {
-        Ok(limits) => evaluator.set_limits(limits),
-        Err(e) => {
-            eprintln!("locus: {e}");
-            return Err(EXIT_USAGE);
-        }
-    }
+    evaluator.set_limits(run_limits.limits().map_err(usage)?);
     let known: Vec<&str> = evaluator.output_names().collect();
     if let Some(bad) = run_limits
         .outputs
         .iter()
         .find(|o| !known.contains(&o.as_str()))
     {
-        eprintln!(
-            "locus: --output: unknown output \"{bad}\" (the graph's outputs are: {})",
+        return Err(usage(format!(
+            "--output: unknown output \"{bad}\" (the graph's outputs are: {})",
             if known.is_empty() {
                 "none".to_owned()
             } else {
                 known.join(", ")
             }
-        );
-        return Err(EXIT_USAGE);
+        )));
     }
     for set in sets {
         let Some((name, value)) = set.split_once('=') else {
-            eprintln!("locus: --set needs NAME=VALUE, got \"{set}\"");
-            return Err(EXIT_USAGE);
+            return Err(usage(format!("--set needs NAME=VALUE, got \"{set}\"")));
         };
-        if let Err(e) = evaluator.set_input_text(name.trim(), value) {
-            eprintln!("locus: --set: {e}");
-            return Err(EXIT_USAGE);
-        }
+        evaluator
+            .set_input_text(name.trim(), value)
+            .map_err(|e| usage(format!("--set: {e}")))?;
     }
     Ok(evaluator)
 }

@@ -35,6 +35,7 @@ mod render;
 mod serve;
 mod stream;
 mod test_graphs;
+mod view_serve;
 mod write_file;
 
 use std::path::PathBuf;
@@ -119,13 +120,26 @@ enum Command {
         limits: graph_file::RunLimits,
     },
     /// Evaluate a graph and write one self-contained HTML page that shows its outputs in an
-    /// orbit view, with toggles per output and branch, click-to-inspect and the messages.
+    /// orbit view, with toggles per output and branch, click-to-inspect and the messages; or,
+    /// with --serve, serve the page on 127.0.0.1 and evaluate again whenever the file changes.
     View {
-        /// The graph file (.ron).
+        /// The graph file (.ron, or Grasshopper .gh/.ghx).
         graph: PathBuf,
         /// The page to write (default: the graph's name with .html).
-        #[arg(short = 'o', long = "to", value_name = "FILE")]
+        #[arg(
+            short = 'o',
+            long = "to",
+            value_name = "FILE",
+            conflicts_with = "serve"
+        )]
         file: Option<PathBuf>,
+        /// Serve the page on 127.0.0.1 instead of writing it; the page reloads, keeping its
+        /// camera, each time the graph file changes. Prints the page's address on stdout.
+        #[arg(long)]
+        serve: bool,
+        /// The port for --serve (0: any free port).
+        #[arg(long, value_name = "PORT", default_value_t = 8417, requires = "serve")]
+        port: u16,
         /// Give a named input a value, as with `locus run`.
         #[arg(long = "set", value_name = "NAME=VALUE")]
         set: Vec<String>,
@@ -267,10 +281,27 @@ fn main() -> ExitCode {
         ),
         Command::View {
             graph,
+            serve: true,
+            port,
+            set,
+            threads,
+            limits,
+            ..
+        } => view_serve::serve(
+            &registry,
+            &graph,
+            &set,
+            threads.map(|n| n as usize),
+            &limits,
+            port,
+        ),
+        Command::View {
+            graph,
             file,
             set,
             threads,
             limits,
+            ..
         } => export::view(
             &registry,
             &graph,

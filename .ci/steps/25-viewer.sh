@@ -22,3 +22,25 @@ for graph in tangent_spheres exploded_box; do
   pages+=("$out/$graph.html")
 done
 node crates/export/e2e/viewer.mjs "${pages[@]}"
+
+# The live page of `locus view --serve`: reloads after the graph file changes, camera kept.
+live="$out/live"
+mkdir -p "$live"
+cat > "$live/points.ron" <<'RON'
+(
+    format: 1,
+    name: "points",
+    nodes: [
+        (id: "p", type: "params.point", values: {"Pt": [(0, 0, 0), (4, 0, 0), (4, 3, 0)]}),
+    ],
+    wires: [],
+    outputs: {"P": "p.Pt"},
+)
+RON
+./target/debug/locus view --serve --port 0 --quiet "$live/points.ron" > "$live/address" 2> "$live/server.log" &
+server=$!
+trap 'kill $server 2> /dev/null || true' EXIT
+for _ in $(seq 100); do [ -s "$live/address" ] && break; sleep 0.1; done
+node crates/export/e2e/live.mjs "$(head -1 "$live/address")" "$live/points.ron"
+kill $server
+wait $server || true

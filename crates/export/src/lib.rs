@@ -40,7 +40,7 @@ pub use crate::stl::to_stl;
 pub use crate::svg::to_svg;
 pub use crate::tessellate::Tessellation;
 pub use crate::view::View;
-pub use crate::viewer::to_html;
+pub use crate::viewer::{to_html, to_live_html};
 
 /// Why an export failed.
 #[derive(Debug, thiserror::Error)]

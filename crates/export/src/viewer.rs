@@ -48,14 +48,42 @@ fn escape_html(text: &str) -> String {
 /// # Errors
 /// As [`to_glb`].
 pub fn to_html(scene: &Scene, messages: &Json, title: &str) -> Result<String, ExportError> {
+    page(scene, messages, title, None)
+}
+
+/// The page for a scene served by `locus view --serve`: as [`to_html`], and the page asks its
+/// server for the `generation` URL beside it twice a second, reloading (with the camera kept)
+/// when the answer is no longer `generation`, the number of the evaluation it shows.
+///
+/// # Errors
+/// As [`to_glb`].
+pub fn to_live_html(
+    scene: &Scene,
+    messages: &Json,
+    title: &str,
+    generation: u64,
+) -> Result<String, ExportError> {
+    page(scene, messages, title, Some(generation))
+}
+
+fn page(
+    scene: &Scene,
+    messages: &Json,
+    title: &str,
+    live: Option<u64>,
+) -> Result<String, ExportError> {
     let glb = to_glb(scene, &GltfOptions::default())?;
     let glb = base64::engine::general_purpose::STANDARD.encode(glb);
-    let data =
+    let mut data =
         serde_json::json!({ "title": title, "messages": messages, "skipped": scene.skipped });
+    if let Some(generation) = live {
+        data["live"] = serde_json::json!({ "generation": generation });
+    }
     let title = escape_html(title);
     Ok(format!(
         "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
 <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\
+<link rel=\"icon\" href=\"data:,\">\
 <title>{title} — locus</title><style>{STYLE}</style></head>\n<body>\
 <div id=\"viewport\"></div>\
 <div id=\"panel\"><h1>{title}</h1><h2>Selected</h2><div id=\"selection\"></div>\
@@ -82,9 +110,16 @@ mod tests {
             "only the three script elements end"
         );
         assert!(html.contains("\\u003c/script>\\u003cb>"));
+        assert!(!html.contains("\"live\":{"), "a written page is not live");
         // No network at view time: the only URL strings are XML namespace names (the headless
         // browser test also fails on any request that is not the page itself).
         let urls = html.matches("\"http").count() + html.matches("'http").count();
         assert_eq!(urls, html.matches("\"http://www.w3.org/").count());
+    }
+
+    #[test]
+    fn a_live_page_carries_its_generation() {
+        let html = to_live_html(&Scene::new(), &serde_json::json!([]), "g", 7).unwrap();
+        assert!(html.contains("\"live\":{\"generation\":7}"));
     }
 }

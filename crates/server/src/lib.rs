@@ -5,7 +5,7 @@
 //! ([`pool`]); definitions are read and checked once and cached by content hash, with idle
 //! evaluators kept per definition for incremental re-evaluation ([`cache`]); every request has
 //! limits ([`Limits`]). `docs/server.md` documents the endpoints, the schema mapping, the
-//! limits and deployment.
+//! limits and deployment. [`live`] is the small page server of `locus view --serve`.
 //!
 //! ```no_run
 //! let mut registry = locus_runtime::NodeRegistry::new();
@@ -23,6 +23,7 @@ pub mod config;
 pub mod definition;
 pub mod error;
 pub mod http;
+pub mod live;
 pub mod native;
 pub mod openapi;
 pub mod pool;
@@ -31,6 +32,7 @@ pub mod state;
 use std::net::SocketAddr;
 
 pub use config::{Config, Limits};
+pub use live::{LivePage, serve_live_page};
 use locus_runtime::NodeRegistry;
 pub use state::State;
 use tokio::sync::oneshot;
@@ -58,7 +60,8 @@ pub fn serve(config: Config, registry: NodeRegistry) -> std::io::Result<()> {
     })
 }
 
-async fn shutdown_signal() {
+/// Resolves on ctrl-c or (on Unix) SIGTERM.
+pub(crate) async fn shutdown_signal() {
     let ctrl_c = async {
         let _ = tokio::signal::ctrl_c().await;
     };

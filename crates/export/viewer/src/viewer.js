@@ -2,15 +2,19 @@
 // branches with toggles, the address and value of a clicked object, and the messages per node.
 // The page embeds everything it shows (no network): the glTF as base64 in
 // <script id="locus-glb">, the outputs and messages as JSON in <script id="locus-data">.
+// A live page (`locus view --serve`, its data has `live`) asks the server for the generation of
+// its evaluation twice a second, reloads when the graph was evaluated again, and keeps the
+// camera across reloads.
 
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
 // The page's state, read by the end-to-end test (crates/export/e2e/viewer.mjs): whether the
-// scene is loaded, how many item objects it holds, errors, the selected item's extras, and
-// `probes()`, a point on screen for each item in view.
-const state = { ready: false, objectCount: 0, errors: [], selected: null, probes: () => [] };
+// scene is loaded, how many item objects it holds, errors, the selected item's extras,
+// `probes()`, a point on screen for each item in view, `camera()`, its position and target, and
+// on a live page the generation shown.
+const state = { ready: false, objectCount: 0, errors: [], selected: null, probes: () => [], camera: () => null, generation: null };
 window.locusViewer = state;
 
 function base64ToBuffer(text) {
@@ -57,6 +61,10 @@ function start() {
   }
   controls.addEventListener('change', draw);
   window.addEventListener('resize', resize);
+  if (data.live) {
+    controls.addEventListener('change', () => saveCamera(cameraKey(data), camera, controls));
+    watchGeneration(data.live.generation);
+  }
 
   const loader = new GLTFLoader();
   loader.parse(base64ToBuffer(document.getElementById('locus-glb').textContent), '', (gltf) => {
@@ -73,10 +81,12 @@ function start() {
     camera.far = size * 100;
     camera.position.copy(centre).add(new THREE.Vector3(1, 0.8, 1).normalize().multiplyScalar(size * 1.3));
     controls.target.copy(centre);
+    if (data.live) restoreCamera(cameraKey(data), camera, controls);
     controls.update();
     buildPanel(root, data, draw);
     state.objectCount = countItems(root);
     state.probes = () => probes(root, camera, renderer.domElement);
+    state.camera = () => ({ position: camera.position.toArray(), target: controls.target.toArray() });
     resize();
     state.ready = true;
     document.body.dataset.ready = 'true';
@@ -101,6 +111,46 @@ function start() {
     while (item && !(item.userData && item.userData.output !== undefined && item.userData.index !== undefined)) item = item.parent;
     select(item ? item.userData : null);
   });
+}
+
+// The camera of a live page is kept per graph for the browser tab (sessionStorage).
+function cameraKey(data) {
+  return `locus-camera:${data.title}`;
+}
+
+function saveCamera(key, camera, controls) {
+  try {
+    sessionStorage.setItem(key, JSON.stringify({ position: camera.position.toArray(), target: controls.target.toArray() }));
+  } catch (_) { /* storage may be disabled: the camera is then fitted on each reload */ }
+}
+
+function restoreCamera(key, camera, controls) {
+  let saved = null;
+  try { saved = JSON.parse(sessionStorage.getItem(key)); } catch (_) { saved = null; }
+  const finite = (a) => Array.isArray(a) && a.length === 3 && a.every(Number.isFinite);
+  if (!saved || !finite(saved.position) || !finite(saved.target)) return;
+  camera.position.fromArray(saved.position);
+  controls.target.fromArray(saved.target);
+}
+
+// How often a live page asks whether the graph was evaluated again, in milliseconds.
+const LIVE_POLL_MS = 500;
+
+// Reloads the page when the server's generation differs from the one the page shows. A server
+// that stopped answering is shown in the panel, and the page keeps asking.
+function watchGeneration(generation) {
+  const status = el('p', { id: 'live-status' }, 'Live: evaluated again when the graph file changes.');
+  document.getElementById('panel').prepend(status);
+  state.generation = generation;
+  setInterval(() => {
+    fetch('generation', { cache: 'no-store' })
+      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))))
+      .then((text) => {
+        status.textContent = 'Live: evaluated again when the graph file changes.';
+        if (Number(text) !== generation) window.location.reload();
+      })
+      .catch(() => { status.textContent = 'Live: the server does not answer.'; });
+  }, LIVE_POLL_MS);
 }
 
 function countItems(root) {
