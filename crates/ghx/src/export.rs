@@ -8,6 +8,8 @@
 
 use std::collections::HashMap;
 
+mod gradient;
+
 use locus_runtime::{
     DataType, Graph, GraphNode, Modifier, NodeRegistry, NodeType, Value, parse_literal,
 };
@@ -553,6 +555,9 @@ fn write_object(
                     |o| {
                         attributes(o, pos);
                         let mut chunks = 1;
+                        if p.node_type.id == "display.gradient" {
+                            chunks += gradient::write(o, p.node, warnings);
+                        }
                         let write_ports =
                             |o: &mut Out,
                              in_name: &str,

@@ -20,6 +20,7 @@ use crate::limits::Limits;
 use crate::literal;
 use crate::report::{ComputeName, ImportDiagnostic, ObjectRef, Outcome, Report};
 
+mod gradient;
 mod special;
 mod wiring;
 
@@ -508,6 +509,23 @@ impl Mapper<'_> {
                         None,
                     );
                 }
+            }
+        }
+        if node_type.id == "display.gradient" {
+            match gradient::settings(&o.container) {
+                Some(Ok(settings)) => node.settings.extend(settings),
+                Some(Err(e)) => {
+                    node.disabled = true;
+                    self.diag(
+                        Level::Warning,
+                        "unsupported-gradient",
+                        format!("{r}: the gradient does not read ({e}); the node is disabled"),
+                        Some(r.clone()),
+                        None,
+                        None,
+                    );
+                }
+                None => {}
             }
         }
         let mut note = format!("{} \"{}\"", o.type_name, o.nickname);
