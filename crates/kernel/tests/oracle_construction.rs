@@ -350,3 +350,43 @@ fn cap_holes_cases() {
     }
     f.finish("cap holes");
 }
+
+/// `join_curves`: [`Curve::join`] gives the file's chains: their count, and per chain (matched
+/// by length) closed and length (1e-9 relative).
+#[test]
+fn join_curves_cases() {
+    let mut f = Failures::default();
+    for case in cases("join_curves") {
+        let id = id(&case);
+        let inputs = &case["inputs"];
+        let e = &case["expected"];
+        let curves: Vec<Curve> = inputs["curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| Curve::Nurbs(nurbs(c)))
+            .collect();
+        let joined = match Curve::join(&curves, num(&inputs["tolerance"]), false) {
+            Ok(j) => j,
+            Err(err) => {
+                f.push(format!("{id}: join failed: {err}"));
+                continue;
+            }
+        };
+        let want = e["chains"].as_array().unwrap();
+        f.check(joined.len() == want.len(), || {
+            format!("{id}: {} chains, expected {}", joined.len(), want.len())
+        });
+        for chain in want {
+            let length = num(&chain["length"]);
+            let closed = chain["closed"].as_bool().unwrap();
+            let found = joined
+                .iter()
+                .any(|c| close(c.to_nurbs().length(), length, EXACT) && c.is_closed() == closed);
+            f.check(found, || {
+                format!("{id}: no joined curve of length {length} (closed {closed})")
+            });
+        }
+    }
+    f.finish("join curves");
+}
