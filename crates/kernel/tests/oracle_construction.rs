@@ -390,3 +390,51 @@ fn join_curves_cases() {
     }
     f.finish("join curves");
 }
+
+/// `planar_boundary`: [`Brep::planar_regions`] gives one face per outer boundary with its
+/// holes: the total area, and each expected face's area and centroid (faces matched by area).
+#[test]
+fn planar_boundary_cases() {
+    let mut f = Failures::default();
+    for case in cases("planar_boundary") {
+        let id = id(&case);
+        let e = &case["expected"];
+        let curves: Vec<Curve> = case["inputs"]["curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| Curve::Nurbs(nurbs(c)))
+            .collect();
+        let regions = match Brep::planar_regions(&curves, MODEL_TOL) {
+            Ok((regions, failed)) => {
+                f.check(failed.is_empty(), || {
+                    format!("{id}: boundaries failed: {failed:?}")
+                });
+                regions
+            }
+            Err(err) => {
+                f.push(format!("{id}: planar regions failed: {err}"));
+                continue;
+            }
+        };
+        let props: Vec<_> = regions
+            .iter()
+            .filter_map(|r| r.area_properties().ok())
+            .collect();
+        let total: f64 = props.iter().map(|p| p.area).sum();
+        let want_total = num(&e["total_area"]);
+        f.check(close(total, want_total, EXACT), || {
+            format!("{id}: total area {total}, expected {want_total}")
+        });
+        for face in e["faces"].as_array().unwrap() {
+            let (area, centroid) = (num(&face["area"]), triple(&face["centroid"]));
+            let found = props.iter().any(|p| {
+                close(p.area, area, EXACT) && close3(p.centroid.to_array(), centroid, CENTROID)
+            });
+            f.check(found, || {
+                format!("{id}: no face of area {area} and centroid {centroid:?}")
+            });
+        }
+    }
+    f.finish("planar boundary");
+}
