@@ -9,7 +9,13 @@
 //! - `loft`: [`NurbsSurface::loft`] (straight for `ruled`, normal for `smooth`): area where the
 //!   result is forced, and the ruling midpoints on the result;
 //! - `cap_holes`: [`Brep::cap_planar_holes`] on extrusions and ruled lofts: caps added, closed,
-//!   volume.
+//!   volume (the `surface` recipe, `ch-05`, is not replayed);
+//! - `join_curves`: [`Curve::join`]: chain count, closed, length;
+//! - `planar_boundary`: [`Brep::planar_regions`]: total area, per-face area and centroid.
+//!
+//! Not replayed yet: `offset` (the cases' inside/outside and left/right sides still have to be
+//! mapped onto the kernel's signed distance), `pipe`, `four_point_surface`, `edge_surface`
+//! (no kernel builders yet).
 //!
 //! Tolerances are the file's (`tolerances.areas_volumes`, `points_on_result`): 1e-9 relative for
 //! exact constructions, 1e-6 for smooth lofts; centroids 1e-8 × max(1, size); points 1e-7
