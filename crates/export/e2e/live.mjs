@@ -5,18 +5,13 @@
 // Usage: node live.mjs URL GRAPH.ron  (GRAPH.ron is the file the server watches; it holds a
 // params.point node "p" whose point list is rewritten here)
 import { readFile, writeFile } from 'node:fs/promises';
-import { chromium } from 'playwright-core';
+import { launchChromium } from './browser.mjs';
 
 const [url, graph] = process.argv.slice(2);
 /** How long a reload may take after the file changed (the server polls every 250 ms). */
 const RELOAD_MS = 30000;
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-    '--disable-quic', '--no-first-run', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync'],
-});
+const browser = await launchChromium();
 const errors = [];
 const page = await browser.newPage({ viewport: { width: 900, height: 600 } });
 const origin = new URL(url).origin;

@@ -5,7 +5,7 @@
 // Screenshots are saved next to the pages as artifacts.
 // Usage: node viewer.mjs PAGE.html ...
 import { readFile, writeFile } from 'node:fs/promises';
-import { chromium } from 'playwright-core';
+import { launchChromium } from './browser.mjs';
 import { PNG } from 'pngjs';
 
 /** The JSON chunk of the page's embedded .glb. */
@@ -32,12 +32,7 @@ const address = (a) => `${a.output} ${a.path}[${a.index}]`;
 /** The most objects clicked on a page before giving up on hitting the one aimed at. */
 const MAX_CLICKS = 20;
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-    '--disable-quic', '--no-first-run', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync'],
-});
+const browser = await launchChromium();
 let failed = 0;
 for (const file of process.argv.slice(2)) {
   const errors = [];
