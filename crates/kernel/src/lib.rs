@@ -76,7 +76,8 @@ pub use crate::mesh::parameters::{
     MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters,
 };
 pub use crate::mesh::{
-    Color, GRID_COINCIDENT_DISTANCE, Mesh, MeshEdge, MeshFace, MeshPoint, WELD_DISTANCE,
+    Color, GRID_COINCIDENT_DISTANCE, INDEX_MIN_FACES, Mesh, MeshEdge, MeshFace, MeshPoint,
+    WELD_DISTANCE,
 };
 pub use crate::surface::NurbsSurface;
 pub use crate::surface::closest_point::SurfaceClosestPoint;
