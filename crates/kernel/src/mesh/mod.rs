@@ -14,6 +14,7 @@ pub(crate) mod parameters;
 mod polyline;
 mod sampling;
 mod tessellate;
+mod triangulation;
 mod weld;
 
 use std::collections::HashMap;
@@ -22,6 +23,7 @@ pub use closest::MeshPoint;
 pub use edges::MeshEdge;
 pub use grid::GRID_COINCIDENT_DISTANCE;
 pub use index::INDEX_MIN_FACES;
+pub use triangulation::PlanarTriangulation;
 pub use weld::WELD_DISTANCE;
 
 use crate::{BoundingBox, Error, Point3, Result, Transform, Vector3};
@@ -374,11 +376,19 @@ impl Mesh {
 
     /// The mesh with every face reversed (and normals negated).
     pub fn flipped(&self) -> Self {
+        self.flipped_parts(true, true)
+    }
+
+    /// The mesh with its vertex normals negated (`vertex_normals`) and every face's vertex
+    /// order reversed (`orientation`), as Rhino's `Mesh.Flip`.
+    pub fn flipped_parts(&self, vertex_normals: bool, orientation: bool) -> Self {
         let mut mesh = self.clone();
-        for face in &mut mesh.faces {
-            *face = face.flipped();
+        if orientation {
+            for face in &mut mesh.faces {
+                *face = face.flipped();
+            }
         }
-        if let Some(normals) = &mut mesh.normals {
+        if vertex_normals && let Some(normals) = &mut mesh.normals {
             for n in normals {
                 *n = -*n;
             }
