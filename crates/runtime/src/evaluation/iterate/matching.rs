@@ -102,8 +102,26 @@ pub(super) fn branch_iterations<'a>(
             .zip(&lengths)
             .filter(|(p, _)| p.access == Access::Item)
             .map(|(_, &l)| l);
+        // Item inputs that are all optional and empty here do not stop a node whose other
+        // inputs have data from solving once (Delaunay Mesh's points without a Plane), as
+        // Grasshopper counts a list input as one item.
+        let items_absent = has_item
+            && ports
+                .iter()
+                .zip(&lengths)
+                .filter(|(p, _)| p.access == Access::Item)
+                .all(|(p, &l)| p.optional && l == 0)
+            && ports
+                .iter()
+                .zip(data)
+                .any(|(p, t)| p.access != Access::Item && t.branch_count() > 0);
         let count = if !has_item {
             Some(1)
+        } else if items_absent {
+            match run.matching {
+                Matching::Cross => step_product,
+                Matching::Longest | Matching::Shortest => Some(1),
+            }
         } else {
             match run.matching {
                 Matching::Longest => Some(item_lengths.max().unwrap_or(0)),
