@@ -37,7 +37,7 @@ fn principal_input(run: &NodeRun<'_>, data: &[&DataTree]) -> Option<usize> {
 pub(super) fn branch_iterations<'a>(
     run: &NodeRun<'_>,
     data: &[&'a DataTree],
-) -> Result<Vec<BranchIteration<'a>>, String> {
+) -> Result<Iterations<'a>, String> {
     let ports = run.inputs;
     let max_items = run.budget.max_items;
     let has_item = ports.iter().any(|p| p.access == Access::Item);
@@ -72,7 +72,7 @@ pub(super) fn branch_iterations<'a>(
         .iter()
         .try_fold(1usize, |n, (_, b)| n.checked_mul(b.len()));
     let mut total = n_branches;
-    let mut out = Vec::with_capacity(n_branches);
+    let mut out = Iterations::with_capacity(n_branches);
     for j in 0..n_branches {
         let target = match principal.map(|p| data[p].branches()) {
             Some(branches) if !branches.is_empty() => {
@@ -85,7 +85,7 @@ pub(super) fn branch_iterations<'a>(
             }
             _ => TreePath::new(vec![j as u32]),
         };
-        let branches: Vec<Option<&Branch>> = data
+        let branches: PerInput<Option<&Branch>> = data
             .iter()
             .zip(ports)
             .map(|(t, p)| {
@@ -96,7 +96,7 @@ pub(super) fn branch_iterations<'a>(
                 }
             })
             .collect();
-        let lengths: Vec<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
+        let lengths: PerInput<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
         let mut item_lengths = ports
             .iter()
             .zip(&lengths)
