@@ -1,4 +1,4 @@
-"""The worker process of locus's Python script nodes: ``python -m locus._script_worker``.
+"""The worker process of locus's Python script nodes (``locus._script_worker.main``).
 
 The engine (the ``locus`` command, a host, or this package's own ``Graph``) starts one worker
 per concurrently evaluated script node and keeps it for later evaluations. The worker reads
@@ -68,6 +68,11 @@ def _take_pipes():
 def main():
     proto_in, proto_out = _take_pipes()
     from . import __version__, _locus, _script
+
+    # The engine starts the worker with the working folder off the module path (so that the
+    # package's sources cannot shadow the installed package); scripts may import from it.
+    if os.getcwd() not in sys.path:
+        sys.path.append(os.getcwd())
 
     write_frame(proto_out, _locus._script_hello(__version__, platform.python_version()))
     while True:

@@ -75,7 +75,7 @@ fn a_python_without_the_locus_package_is_not_available_either() {
     let errs = errors(&r);
     assert_eq!(errs.len(), 1, "{:?}", r.messages);
     assert!(
-        errs[0].text.starts_with("Python is not available: false -m locus._script_worker ended"),
+        errs[0].text.starts_with("Python is not available: false (locus._script_worker) ended"),
         "{}",
         errs[0].text
     );

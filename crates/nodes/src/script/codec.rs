@@ -675,7 +675,7 @@ mod tests {
                 angle: Interval::new(0.25, 2.0),
             }),
             Value::Curve(Shared::new(Curve::Nurbs(nurbs))),
-            Value::Curve(Shared::new(Curve::Line(Line::new(
+            Value::Curve(Shared::new(Curve::from(Line::new(
                 Point3::ORIGIN,
                 Point3::new(0.0, 0.0, 4.0),
             )))),

@@ -13,7 +13,7 @@
 //! iterations of one node evaluation go to the worker in one request ([`protocol`], values in
 //! the [`codec`]'s exact form) and come back in order, so a node of a thousand items costs one
 //! round trip, not a thousand. The worker is the `locus` Python package
-//! (`python -m locus._script_worker`), so scripts get the package's geometry classes
+//! (`locus._script_worker` run by `python`), so scripts get the package's geometry classes
 //! (`locus.Point3`, `locus.NurbsCurve`, …), or with the `ghpython` setting the Rhino types of
 //! its GhPython compatibility layer (`Rhino.Geometry`, `rhinoscriptsyntax`). Without a Python
 //! that has the package, the node reports that Python is not available.

@@ -1,6 +1,6 @@
 //! The messages between the engine and a script worker, and how they are framed on its pipes.
 //!
-//! A worker is a Python process (`python -m locus._script_worker`) that reads requests on its
+//! A worker is a Python process (`locus._script_worker` run by `python`) that reads requests on its
 //! standard input and writes replies on its standard output. Every message is a frame: its
 //! length as 4 bytes (little-endian), then that many bytes, written and read with
 //! [`codec`](super::codec).

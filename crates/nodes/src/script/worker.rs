@@ -1,7 +1,7 @@
 //! Script worker processes: starting them, holding each call to its time limit, and keeping
 //! idle ones for the next evaluation.
 //!
-//! A worker is `PYTHON -m locus._script_worker`, a child process that speaks
+//! A worker is `PYTHON` running `locus._script_worker`, a child process that speaks
 //! [`protocol`](super::protocol) on its standard input and output. Nothing a script does can
 //! reach the engine's process: a script that never returns is stopped (the process is killed
 //! when an iteration passes its time limit plus [`HARD_LIMIT_GRACE`]), and a script that ends
@@ -41,6 +41,15 @@ pub const UNAVAILABLE_RETRY: Duration = Duration::from_secs(5);
 
 /// How many bytes of a worker's standard error are kept to explain why it ended.
 const STDERR_TAIL_BYTES: usize = 4096;
+
+/// What a worker process runs: `locus._script_worker`, imported with the working folder left
+/// off the module path, so that a `locus` folder there (the package's sources in a checkout)
+/// cannot stand in for the installed package. The worker puts the folder back, last, for
+/// scripts.
+const WORKER_MAIN: &str = concat!(
+    "import sys; sys.path[:] = [p for p in sys.path if p not in ('', '.')]; ",
+    "from locus._script_worker import main; sys.exit(main())",
+);
 
 /// The environment variable that names the Python interpreter to run scripts with.
 pub const PYTHON_ENV: &str = "LOCUS_PYTHON";
@@ -127,7 +136,7 @@ impl Worker {
     fn start(interpreter: &OsString) -> Result<Self, String> {
         let shown = interpreter.to_string_lossy().into_owned();
         let mut child = Command::new(interpreter)
-            .args(["-u", "-m", "locus._script_worker"])
+            .args(["-u", "-c", WORKER_MAIN])
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
@@ -204,13 +213,13 @@ impl Worker {
                 Ok(worker)
             }
             Received::Reply(other) => Err(format!(
-                "{shown} -m locus._script_worker answered {other:?} instead of its hello"
+                "{shown} (locus._script_worker) answered {other:?} instead of its hello"
             )),
             Received::Timeout => Err(format!(
-                "{shown} -m locus._script_worker did not start within {} s",
+                "{shown} (locus._script_worker) did not start within {} s",
                 STARTUP_TIMEOUT.as_secs()
             )),
-            Received::Ended(why) => Err(format!("{shown} -m locus._script_worker {why}")),
+            Received::Ended(why) => Err(format!("{shown} (locus._script_worker) {why}")),
         }
     }
 
