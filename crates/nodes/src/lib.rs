@@ -106,6 +106,10 @@
 //!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
 //!
+//! **Script** ([`script`])
+//! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python
+//!   script per iteration, run in a separate Python process with the `locus` package.
+//!
 //! # Performance
 //!
 //! `cargo bench -p locus-nodes --bench library` measures the library's nodes against
@@ -169,6 +173,7 @@ pub mod intersect;
 pub mod maths;
 pub mod mesh;
 pub mod params;
+pub mod script;
 pub mod sets;
 pub mod surface;
 #[cfg(test)]
@@ -190,4 +195,5 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
     display::register(registry);
     intersect::register(registry);
+    script::register(registry);
 }

@@ -210,7 +210,7 @@ pub use crate::limits::{
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
-    ValueConstraint, VariableInputs,
+    ValueConstraint, VariableInputs, VariableOutputs,
 };
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;
