@@ -67,6 +67,9 @@ pub use crate::geometry::plane::{Plane, perpendicular_to};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::intersect::curve_curve::{
+    CurveCurveHit, CurveCurveIntersections, CurveOverlap, TANGENT_SINE,
+};
 pub use crate::intersect::curve_plane::{CurveHit, CurveIntersections};
 pub use crate::intersect::linear::{line_line, line_plane, plane_plane, plane_plane_plane};
 pub use crate::intersect::mesh::{mesh_plane, mesh_ray};
