@@ -9,10 +9,15 @@
 //! meeting and which nearby events are the same.
 
 pub(crate) mod bernstein;
+pub(crate) mod brep_plane;
 pub(crate) mod curve_curve;
 pub(crate) mod curve_plane;
 pub(crate) mod curve_self;
+pub(crate) mod face_region;
+pub(crate) mod hermite_fit;
 pub(crate) mod linear;
 pub(crate) mod mesh;
 pub(crate) mod pair_newton;
+pub(crate) mod patch;
 pub(crate) mod piece;
+pub(crate) mod surface_plane;
