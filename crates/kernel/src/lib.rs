@@ -68,6 +68,10 @@ pub use crate::geometry::plane_fit::{LINE_SPREAD, PlaneFit};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::intersect::brep_plane::{BrepSection, ContourSection, MAX_CONTOUR_PLANES};
+pub use crate::intersect::curve_curve::{
+    CurveCurveHit, CurveCurveIntersections, CurveOverlap, TANGENT_SINE,
+};
 pub use crate::intersect::curve_plane::{CurveHit, CurveIntersections};
 pub use crate::intersect::linear::{line_line, line_plane, plane_plane, plane_plane_plane};
 pub use crate::intersect::mesh::{mesh_plane, mesh_ray};

@@ -105,6 +105,7 @@
 //!   Plane | Plane \[PPX\], Plane | Plane | Plane \[3PX\], Curve | Plane \[PCX\],
 //!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
+//! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\].
 //!
 //! **Script** ([`script`])
 //! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python
