@@ -532,8 +532,8 @@ fn write_object(
                     },
                 );
             } else {
-                let variable = p.node_type.variable_inputs.is_some()
-                    || p.node_type.variable_outputs.is_some();
+                let variable =
+                    p.node_type.variable_inputs.is_some() || p.node_type.variable_outputs.is_some();
                 items_and_chunks(
                     o,
                     |o| {

@@ -104,8 +104,7 @@ impl<'a> Checker<'a> {
         for (k, name) in names.iter().enumerate() {
             let message = if name.trim().is_empty() {
                 Some("empty output name".to_owned())
-            } else if names[..k].contains(name) || variable.fixed.iter().any(|p| p.is_named(name))
-            {
+            } else if names[..k].contains(name) || variable.fixed.iter().any(|p| p.is_named(name)) {
                 Some(format!("duplicate output name \"{name}\""))
             } else {
                 None
