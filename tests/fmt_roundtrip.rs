@@ -57,12 +57,23 @@ fn node() -> impl Strategy<Value = GraphNode> {
             ),
             0..2,
         ),
-        proptest::collection::vec(("[A-Za-z]{1,3}", modifiers), 0..2),
+        proptest::collection::vec(("[A-Za-z]{1,3}", modifiers.clone()), 0..2),
+        proptest::collection::vec(("[A-Za-z<>]{1,3}", modifiers), 0..2),
         proptest::sample::select(vec![Matching::Longest, Matching::Shortest, Matching::Cross]),
         any::<bool>(),
     )
         .prop_map(
-            |(id, node_type, input_names, values, settings, modifiers, matching, disabled)| {
+            |(
+                id,
+                node_type,
+                input_names,
+                values,
+                settings,
+                modifiers,
+                output_modifiers,
+                matching,
+                disabled,
+            )| {
                 GraphNode {
                     id: NodeId(id),
                     node_type,
@@ -70,6 +81,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                     values,
                     settings,
                     modifiers,
+                    output_modifiers,
                     matching,
                     disabled,
                 }

@@ -123,6 +123,7 @@ impl<'a> NodeCall<'a> {
                 id: NodeId::from(self.node_type.id.as_str()),
                 node_type: Arc::new(self.node_type.clone()),
                 inputs,
+                output_modifiers: Vec::new(),
                 settings,
                 matching: self.matching,
                 disabled: false,

@@ -84,13 +84,14 @@ pub(crate) fn prepare_input<'a>(
         map_items::<f64>(tree.to_mut(), f64::to_radians);
     }
     if per_item(Modifier::Reparameterize) {
-        reparameterize(node, input, tree.to_mut(), messages);
+        let what = format!("input {}", input.port.nickname);
+        reparameterize(node, &what, tree.to_mut(), messages);
     }
     Ok(tree)
 }
 
 /// Replaces every item of type `T` by `f(item)`, keeping nulls.
-fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
+pub(crate) fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
     let branches = std::mem::take(tree).into_branches();
     let mapped = branches.into_iter().map(|(path, branch)| {
         let (mut column, nulls) = branch.into_parts();
@@ -104,10 +105,11 @@ fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
     *tree = DataTree::from_branches(mapped);
 }
 
-/// Reparameterizes curves and surfaces to the domain 0 to 1 (in each direction).
-fn reparameterize(
+/// Reparameterizes curves and surfaces to the domain 0 to 1 (in each direction); `what`
+/// names the port in messages (`input C`).
+pub(crate) fn reparameterize(
     node: &NodeId,
-    input: &PlanInput,
+    what: &str,
     tree: &mut DataTree,
     messages: &mut Vec<Message>,
 ) {
@@ -133,7 +135,7 @@ fn reparameterize(
                         level: Level::Error,
                         path: Some(path.clone()),
                         index: Some(index),
-                        text: format!("input {}: cannot reparameterize: {e}", input.port.nickname),
+                        text: format!("{what}: cannot reparameterize: {e}"),
                     });
                     b.push_null();
                 }

@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use crate::evaluation::collect;
+use crate::evaluation::{collect, output_modifiers};
 use crate::evaluation::iterate::{NodeLimit, NodeOutput, NodeRun, run_node};
 use crate::evaluation::progress::{Progress, ProgressHook, Tracker};
 use crate::limits::{Budget, Watch, thread_cap};
@@ -602,6 +602,7 @@ impl Evaluator {
             Ok(mut out) => {
                 messages.append(&mut out.messages);
                 out.messages = messages;
+                output_modifiers::apply(node, &mut out, budget.max_items);
                 out
             }
             Err(payload) => {
