@@ -49,6 +49,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
         id(),
         "[a-z]{1,6}\\.[a-z_]{1,8}",
         proptest::option::of(proptest::collection::vec("[a-zA-Z]{1,3}", 0..3)),
+        proptest::option::of(proptest::collection::vec("[a-zA-Z]{1,3}", 0..3)),
         proptest::collection::vec(("[A-Za-z]{1,3}", literal()), 0..3),
         proptest::collection::vec(
             (
@@ -67,6 +68,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                 id,
                 node_type,
                 input_names,
+                output_names,
                 values,
                 settings,
                 modifiers,
@@ -78,6 +80,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                     id: NodeId(id),
                     node_type,
                     input_names,
+                    output_names,
                     values,
                     settings,
                     modifiers,

@@ -63,6 +63,10 @@ fn node_node(node: &GraphNode) -> Node {
         let names = names.iter().map(|n| string_node(n)).collect();
         fields.push(field("inputs", Node::new(Kind::List(names))));
     }
+    if let Some(names) = &node.output_names {
+        let names = names.iter().map(|n| string_node(n)).collect();
+        fields.push(field("outputs", Node::new(Kind::List(names))));
+    }
     if !node.values.is_empty() {
         fields.push(field("values", literal_map(&node.values)));
     }
