@@ -532,8 +532,8 @@ fn write_object(
                     },
                 );
             } else {
-                let variable = p.node_type.variable_inputs.is_some()
-                    || p.node_type.variable_outputs.is_some();
+                let variable =
+                    p.node_type.variable_inputs.is_some() || p.node_type.variable_outputs.is_some();
                 items_and_chunks(
                     o,
                     |o| {
@@ -686,13 +686,28 @@ fn param_items<'a>(
         o.item("Locked", None, 1, "true");
         n += 1;
     }
-    let modifiers = p
+    let mut modifiers = p
         .node
         .modifiers
         .iter()
         .find(|(k, _)| port.is_named(k))
         .map(|(_, m)| m.clone())
         .unwrap_or_default();
+    if is_param(p.node_type)
+        && let Some((_, output)) = p.node.output_modifiers.iter().find(|(_, m)| !m.is_empty())
+    {
+        // A floating parameter has one set of modifiers; on a parameter that passes its data
+        // through, output modifiers do what the same input modifiers do.
+        if modifiers.is_empty() {
+            modifiers.clone_from(output);
+        } else {
+            warnings.push(ExportWarning(format!(
+                "node \"{}\": a floating parameter keeps one set of modifiers; its output \
+                 modifiers are not written",
+                p.node.id
+            )));
+        }
+    }
     if modifiers.contains(&Modifier::Principal) {
         warnings.push(ExportWarning(format!(
             "node \"{}\" input {}: the principal modifier is not written",

@@ -445,8 +445,8 @@ impl Mapper<'_> {
                     .fixed
                     .iter()
                     .find(|f| f.is_named(&p.nickname) || f.is_named(&p.name));
-                let port = match fixed {
-                    Some(f) => f.nickname.clone(),
+                let (port, data_type) = match fixed {
+                    Some(f) => (f.nickname.clone(), f.data_type),
                     None => {
                         let name = [&p.nickname, &p.name]
                             .into_iter()
@@ -454,9 +454,13 @@ impl Mapper<'_> {
                             .cloned()
                             .unwrap_or_else(|| format!("o{k}"));
                         names.push(name.clone());
-                        name
+                        (name, variable.template.data_type)
                     }
                 };
+                let mods = self.modifiers(&r, &id, p, &port, data_type, false);
+                if !mods.is_empty() {
+                    node.output_modifiers.push((port.clone(), mods));
+                }
                 self.sources.insert(
                     p.instance.clone(),
                     Source::Port(PortRef {

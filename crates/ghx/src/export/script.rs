@@ -42,7 +42,10 @@ fn entry(node: &GraphNode, setting: &str, name: &str) -> Option<String> {
 
 /// `ScriptParamAccess` (0 item, 1 list, 2 tree) and `TypeHintID` of one input.
 pub(super) fn input_items(node: &GraphNode, input: &str) -> (String, &'static str) {
-    let access = match entry(node, "access", input).as_deref().map(str::to_ascii_lowercase) {
+    let access = match entry(node, "access", input)
+        .as_deref()
+        .map(str::to_ascii_lowercase)
+    {
         Some(a) if a == "list" => "1",
         Some(a) if a == "tree" => "2",
         _ => "0",

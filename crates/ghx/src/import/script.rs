@@ -81,10 +81,16 @@ pub(super) fn settings(o: &GhObject, inputs: &[Port]) -> (Vec<(String, Literal)>
         }
     }
     if !access.is_empty() {
-        settings.push(("access".to_owned(), Literal(literal::text(&access.join(", ")))));
+        settings.push((
+            "access".to_owned(),
+            Literal(literal::text(&access.join(", "))),
+        ));
     }
     if !hints.is_empty() {
-        settings.push(("hints".to_owned(), Literal(literal::text(&hints.join(", ")))));
+        settings.push((
+            "hints".to_owned(),
+            Literal(literal::text(&hints.join(", "))),
+        ));
     }
     settings.push(("ghpython".to_owned(), Literal("true".to_owned())));
     (settings, warnings)
