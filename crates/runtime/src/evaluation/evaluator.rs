@@ -12,9 +12,9 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use crate::evaluation::{collect, output_modifiers};
 use crate::evaluation::iterate::{NodeLimit, NodeOutput, NodeRun, run_node};
 use crate::evaluation::progress::{Progress, ProgressHook, Tracker};
+use crate::evaluation::{collect, output_modifiers};
 use crate::limits::{Budget, Watch, thread_cap};
 use crate::{DataTree, Level, LimitHit, Limits, Message, NodeError, NodeId, Plan, Prepared};
 

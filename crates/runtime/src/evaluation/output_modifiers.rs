@@ -120,9 +120,23 @@ mod tests {
     #[test]
     fn graft_and_simplify_change_paths() {
         let mut t = numbers(&[(&[2], &[5.0, 6.0])]);
-        modify(&mut t, &[Modifier::Graft], DataType::Number, usize::MAX, "o").unwrap();
+        modify(
+            &mut t,
+            &[Modifier::Graft],
+            DataType::Number,
+            usize::MAX,
+            "o",
+        )
+        .unwrap();
         assert_eq!(t, numbers(&[(&[2, 0], &[5.0]), (&[2, 1], &[6.0])]));
-        modify(&mut t, &[Modifier::Simplify], DataType::Number, usize::MAX, "o").unwrap();
+        modify(
+            &mut t,
+            &[Modifier::Simplify],
+            DataType::Number,
+            usize::MAX,
+            "o",
+        )
+        .unwrap();
         assert_eq!(t, numbers(&[(&[0], &[5.0]), (&[1], &[6.0])]));
     }
 
@@ -141,11 +155,22 @@ mod tests {
         b.push_option(None);
         b.push_option(Some(Value::Boolean(false)));
         let mut t = DataTree::from_branches([(TreePath::from([0]), b)]);
-        modify(&mut t, &[Modifier::Invert], DataType::Boolean, usize::MAX, "o").unwrap();
+        modify(
+            &mut t,
+            &[Modifier::Invert],
+            DataType::Boolean,
+            usize::MAX,
+            "o",
+        )
+        .unwrap();
         let values: Vec<Option<Value>> = t.values().collect();
         assert_eq!(
             values,
-            [Some(Value::Boolean(false)), None, Some(Value::Boolean(true))]
+            [
+                Some(Value::Boolean(false)),
+                None,
+                Some(Value::Boolean(true))
+            ]
         );
     }
 }

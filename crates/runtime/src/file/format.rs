@@ -11,8 +11,8 @@ use std::ops::Range;
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location};
 use crate::file::syntax::{self, Field, Kind, LineIndex, Node};
 pub(crate) use crate::file::write::expected_messages_node;
-pub use crate::file::write::write_graph;
 use crate::file::write::expected_node;
+pub use crate::file::write::write_graph;
 use crate::{
     ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal,
     Matching, Modifier, NodeId, PortRef, Wire,

@@ -106,8 +106,7 @@ impl<'a> Checker<'a> {
         for (k, name) in names.iter().enumerate() {
             let message = if name.trim().is_empty() {
                 Some("empty output name".to_owned())
-            } else if names[..k].contains(name) || variable.fixed.iter().any(|p| p.is_named(name))
-            {
+            } else if names[..k].contains(name) || variable.fixed.iter().any(|p| p.is_named(name)) {
                 Some(format!("duplicate output name \"{name}\""))
             } else {
                 None
@@ -356,10 +355,7 @@ impl<'a> Checker<'a> {
         let spans = self.map().and_then(|m| m.nodes.get(i));
         let (given, given_spans) = match direction {
             PortDirection::Input => (&node.modifiers, spans.map(|s| &s.modifiers)),
-            PortDirection::Output => (
-                &node.output_modifiers,
-                spans.map(|s| &s.output_modifiers),
-            ),
+            PortDirection::Output => (&node.output_modifiers, spans.map(|s| &s.output_modifiers)),
         };
         for (j, (port, list)) in given.iter().enumerate() {
             let span = given_spans.and_then(|s| s.get(j));

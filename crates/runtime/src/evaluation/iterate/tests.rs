@@ -424,7 +424,12 @@ fn empty_optional_item_inputs_do_not_stop_a_list_node() {
     // Under cross reference a list input's branches are a wheel of the odometer (§2.2), so
     // both sums land in one branch, as they do when K has data.
     assert_eq!(
-        run(&node, Matching::Cross, None, &["{0;0}:[1,2,3] {0;1}:[4,5]", ""]),
+        run(
+            &node,
+            Matching::Cross,
+            None,
+            &["{0;0}:[1,2,3] {0;1}:[4,5]", ""]
+        ),
         "{0;0}:[6,9]"
     );
     // With the item present, it iterates as before.
