@@ -9,9 +9,11 @@
 //! reverse, then the per-item changes (invert on Boolean outputs, reparameterize on Curve and
 //! Surface outputs). Outputs are already of their port's type, so nothing is cast.
 
-use crate::evaluation::collect::{map_items, reparameterize};
+use std::borrow::Cow;
+
+use crate::evaluation::collect::{map_items, reparameterize, restructure};
 use crate::evaluation::iterate::{NodeLimit, NodeOutput};
-use crate::{DataTree, DataType, GraftMode, Level, Message, Modifier, PlanNode, SimplifyMode};
+use crate::{DataTree, DataType, Level, Message, Modifier, PlanNode};
 
 /// Applies the output modifiers of `node` to the trees of `out`. A graft that would make more
 /// than `max_items` items and branches empties that output with an error (the item budget).
@@ -43,7 +45,7 @@ pub(crate) fn apply(node: &PlanNode, out: &mut NodeOutput, max_items: usize) {
     }
 }
 
-/// The structural modifiers, reverse and invert, in that order.
+/// The structural modifiers and reverse (shared with inputs), then invert on Boolean outputs.
 ///
 /// # Errors
 /// The item-budget error when a graft would make more than `max_items` items and branches.
@@ -54,34 +56,12 @@ fn modify(
     max_items: usize,
     what: &str,
 ) -> Result<(), String> {
-    for &modifier in &[
-        Modifier::Flatten,
-        Modifier::Graft,
-        Modifier::Simplify,
-        Modifier::Reverse,
-        Modifier::Invert,
-    ] {
-        if !modifiers.contains(&modifier) {
-            continue;
-        }
-        match modifier {
-            Modifier::Flatten => tree.flatten(),
-            Modifier::Graft => {
-                let entries = tree.item_count().saturating_mul(2);
-                if entries > max_items {
-                    return Err(format!(
-                        "grafting {what} would make {} branches ({entries} items and branches), \
-                         above the limit of {max_items} items per output",
-                        tree.item_count()
-                    ));
-                }
-                tree.graft(GraftMode::ALL);
-            }
-            Modifier::Simplify => tree.simplify(SimplifyMode::All),
-            Modifier::Reverse => tree.reverse_items(),
-            _ if data_type == DataType::Boolean => map_items::<bool>(tree, |b| !b),
-            _ => {}
-        }
+    let mut owned = Cow::Owned(std::mem::take(tree));
+    let structured = restructure(&mut owned, modifiers, what, max_items);
+    *tree = owned.into_owned();
+    structured?;
+    if modifiers.contains(&Modifier::Invert) && data_type == DataType::Boolean {
+        map_items::<bool>(tree, |b| !b);
     }
     Ok(())
 }
