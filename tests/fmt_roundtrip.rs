@@ -58,7 +58,8 @@ fn node() -> impl Strategy<Value = GraphNode> {
             ),
             0..2,
         ),
-        proptest::collection::vec(("[A-Za-z]{1,3}", modifiers), 0..2),
+        proptest::collection::vec(("[A-Za-z]{1,3}", modifiers.clone()), 0..2),
+        proptest::collection::vec(("[A-Za-z<>]{1,3}", modifiers), 0..2),
         proptest::sample::select(vec![Matching::Longest, Matching::Shortest, Matching::Cross]),
         any::<bool>(),
     )
@@ -71,6 +72,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                 values,
                 settings,
                 modifiers,
+                output_modifiers,
                 matching,
                 disabled,
             )| {
@@ -82,6 +84,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                     values,
                     settings,
                     modifiers,
+                    output_modifiers,
                     matching,
                     disabled,
                 }

@@ -615,8 +615,15 @@ fn write_object(
                                             );
                                             o.item("Name", None, 10, &port.name);
                                             o.item("NickName", None, 10, &port.nickname);
+                                            let modifiers = p
+                                                .node
+                                                .output_modifiers
+                                                .iter()
+                                                .find(|(k, _)| port.is_named(k))
+                                                .map_or(&[][..], |(_, m)| m.as_slice());
+                                            let n = write_modifiers(o, modifiers);
                                             o.item("SourceCount", None, 3, "0");
-                                            4
+                                            4 + n
                                         },
                                         |_| 0,
                                     );
@@ -679,32 +686,35 @@ fn param_items<'a>(
         o.item("Locked", None, 1, "true");
         n += 1;
     }
-    let modifiers = p
+    let mut modifiers = p
         .node
         .modifiers
         .iter()
         .find(|(k, _)| port.is_named(k))
         .map(|(_, m)| m.clone())
         .unwrap_or_default();
-    for m in &modifiers {
-        match m {
-            Modifier::Flatten => o.item("Mapping", None, 3, "1"),
-            Modifier::Graft => o.item("Mapping", None, 3, "2"),
-            Modifier::Simplify => o.item("SimplifyData", None, 1, "true"),
-            Modifier::Reverse => o.item("ReverseData", None, 1, "true"),
-            Modifier::Invert => o.item("InvertBooleans", None, 1, "true"),
-            Modifier::Degrees => o.item("UseDegrees", None, 1, "true"),
-            Modifier::Reparameterize => o.item("Reparameterize", None, 1, "true"),
-            Modifier::Principal => {
-                warnings.push(ExportWarning(format!(
-                    "node \"{}\" input {}: the principal modifier is not written",
-                    p.node.id, port.nickname
-                )));
-                continue;
-            }
+    if is_param(p.node_type)
+        && let Some((_, output)) = p.node.output_modifiers.iter().find(|(_, m)| !m.is_empty())
+    {
+        // A floating parameter has one set of modifiers; on a parameter that passes its data
+        // through, output modifiers do what the same input modifiers do.
+        if modifiers.is_empty() {
+            modifiers.clone_from(output);
+        } else {
+            warnings.push(ExportWarning(format!(
+                "node \"{}\": a floating parameter keeps one set of modifiers; its output \
+                 modifiers are not written",
+                p.node.id
+            )));
         }
-        n += 1;
     }
+    if modifiers.contains(&Modifier::Principal) {
+        warnings.push(ExportWarning(format!(
+            "node \"{}\" input {}: the principal modifier is not written",
+            p.node.id, port.nickname
+        )));
+    }
+    n += write_modifiers(o, &modifiers);
     let srcs = srcs.cloned().unwrap_or_default();
     for (k, s) in srcs.iter().enumerate() {
         o.item("Source", Some(k), 9, s);
@@ -744,6 +754,26 @@ fn param_items<'a>(
         _ => None,
     };
     (buffer.w.into_inner(), n, persistent)
+}
+
+/// The items of a parameter's modifiers (`Mapping`, `SimplifyData`, …), as Grasshopper stores
+/// them on inputs and outputs alike; returns how many were written. Principal has no item.
+fn write_modifiers(o: &mut Out, modifiers: &[Modifier]) -> usize {
+    let mut n = 0;
+    for m in modifiers {
+        match m {
+            Modifier::Flatten => o.item("Mapping", None, 3, "1"),
+            Modifier::Graft => o.item("Mapping", None, 3, "2"),
+            Modifier::Simplify => o.item("SimplifyData", None, 1, "true"),
+            Modifier::Reverse => o.item("ReverseData", None, 1, "true"),
+            Modifier::Invert => o.item("InvertBooleans", None, 1, "true"),
+            Modifier::Degrees => o.item("UseDegrees", None, 1, "true"),
+            Modifier::Reparameterize => o.item("Reparameterize", None, 1, "true"),
+            Modifier::Principal => continue,
+        }
+        n += 1;
+    }
+    n
 }
 
 /// One persistent item: its item name, type code and parts (or text).

@@ -445,8 +445,8 @@ impl Mapper<'_> {
                     .fixed
                     .iter()
                     .find(|f| f.is_named(&p.nickname) || f.is_named(&p.name));
-                let port = match fixed {
-                    Some(f) => f.nickname.clone(),
+                let (port, data_type) = match fixed {
+                    Some(f) => (f.nickname.clone(), f.data_type),
                     None => {
                         let name = [&p.nickname, &p.name]
                             .into_iter()
@@ -454,9 +454,13 @@ impl Mapper<'_> {
                             .cloned()
                             .unwrap_or_else(|| format!("o{k}"));
                         names.push(name.clone());
-                        name
+                        (name, variable.template.data_type)
                     }
                 };
+                let mods = self.modifiers(&r, &id, p, &port, data_type, false);
+                if !mods.is_empty() {
+                    node.output_modifiers.push((port.clone(), mods));
+                }
                 self.sources.insert(
                     p.instance.clone(),
                     Source::Port(PortRef {
@@ -494,6 +498,13 @@ impl Mapper<'_> {
                     port: port.nickname.clone(),
                 }),
             );
+            if !o.floating {
+                // A floating parameter's modifiers are read once, as its input's.
+                let mods = self.modifiers(&r, &id, p, &port.nickname, port.data_type, false);
+                if !mods.is_empty() {
+                    node.output_modifiers.push((port.nickname.clone(), mods));
+                }
+            }
         }
         let resolved = node_type.resolve_inputs(node.input_names.as_deref());
         for (k, p) in o.inputs.iter().enumerate() {
@@ -636,47 +647,7 @@ impl Mapper<'_> {
                 ),
             }
         }
-        let mut mods: Vec<Modifier> = p
-            .modifiers
-            .iter()
-            .filter_map(|m| {
-                let m = match m {
-                    GhModifier::Flatten => Modifier::Flatten,
-                    GhModifier::Graft => Modifier::Graft,
-                    GhModifier::Simplify => Modifier::Simplify,
-                    GhModifier::Reverse => Modifier::Reverse,
-                    GhModifier::Invert => Modifier::Invert,
-                    GhModifier::Degrees => Modifier::Degrees,
-                    GhModifier::Reparameterize => Modifier::Reparameterize,
-                };
-                let fits = match m {
-                    Modifier::Invert => data_type == DataType::Boolean,
-                    Modifier::Degrees => data_type == DataType::Number,
-                    Modifier::Reparameterize => {
-                        matches!(data_type, DataType::Curve | DataType::Surface)
-                    }
-                    _ => true,
-                };
-                fits.then_some(m)
-            })
-            .collect();
-        mods.dedup();
-        if mods.contains(&Modifier::Simplify)
-            && (mods.contains(&Modifier::Flatten) || mods.contains(&Modifier::Graft))
-        {
-            // locus applies one structural modifier per input; Grasshopper's mapping wins.
-            mods.retain(|m| *m != Modifier::Simplify);
-            self.diag(
-                Level::Warning,
-                "modifiers",
-                format!(
-                    "{r}: input {port} has simplify with flatten or graft; simplify is left out"
-                ),
-                Some(r.clone()),
-                Some(id.clone()),
-                Some(port.to_owned()),
-            );
-        }
+        let mods = self.modifiers(r, &id, p, port, data_type, true);
         if !mods.is_empty() {
             node.modifiers.push((port.to_owned(), mods));
         }
@@ -729,6 +700,62 @@ impl Mapper<'_> {
                 ));
             }
         }
+    }
+
+    /// The modifiers set on a parameter that locus can apply to a port of `data_type` (an
+    /// input, or an output when `input` is false): Grasshopper's mapping wins over simplify,
+    /// as locus applies one structural modifier per port.
+    fn modifiers(
+        &mut self,
+        r: &ObjectRef,
+        id: &NodeId,
+        p: &GhParam,
+        port: &str,
+        data_type: DataType,
+        input: bool,
+    ) -> Vec<Modifier> {
+        let mut mods: Vec<Modifier> = p
+            .modifiers
+            .iter()
+            .filter_map(|m| {
+                let m = match m {
+                    GhModifier::Flatten => Modifier::Flatten,
+                    GhModifier::Graft => Modifier::Graft,
+                    GhModifier::Simplify => Modifier::Simplify,
+                    GhModifier::Reverse => Modifier::Reverse,
+                    GhModifier::Invert => Modifier::Invert,
+                    GhModifier::Degrees => Modifier::Degrees,
+                    GhModifier::Reparameterize => Modifier::Reparameterize,
+                };
+                let fits = match m {
+                    Modifier::Invert => data_type == DataType::Boolean,
+                    Modifier::Degrees => input && data_type == DataType::Number,
+                    Modifier::Reparameterize => {
+                        matches!(data_type, DataType::Curve | DataType::Surface)
+                    }
+                    _ => true,
+                };
+                fits.then_some(m)
+            })
+            .collect();
+        mods.dedup();
+        if mods.contains(&Modifier::Simplify)
+            && (mods.contains(&Modifier::Flatten) || mods.contains(&Modifier::Graft))
+        {
+            mods.retain(|m| *m != Modifier::Simplify);
+            let which = if input { "input" } else { "output" };
+            self.diag(
+                Level::Warning,
+                "modifiers",
+                format!(
+                    "{r}: {which} {port} has simplify with flatten or graft; simplify is left out"
+                ),
+                Some(r.clone()),
+                Some(id.clone()),
+                Some(port.to_owned()),
+            );
+        }
+        mods
     }
 
     fn finish(mut self) -> Import {

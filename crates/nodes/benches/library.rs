@@ -70,6 +70,7 @@ fn one_node(case: &Case, threads: usize) -> Evaluator {
             id: NodeId::from("n"),
             node_type: Arc::new(node_type.clone()),
             inputs,
+            output_modifiers: Vec::new(),
             settings: Vec::new(),
             matching: Matching::Longest,
             disabled: false,

@@ -212,6 +212,7 @@ fn one_node(node_type: &NodeType, inputs: &[DataTree], read: &[usize]) -> Evalua
             id: NodeId::from(node_type.id.as_str()),
             node_type: Arc::new(node_type.clone()),
             inputs,
+            output_modifiers: Vec::new(),
             settings: Vec::new(),
             matching: Matching::Longest,
             disabled: false,

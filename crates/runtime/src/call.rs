@@ -134,6 +134,7 @@ impl<'a> NodeCall<'a> {
                 id: NodeId::from(self.node_type.id.as_str()),
                 node_type: Arc::new(node_type),
                 inputs,
+                output_modifiers: Vec::new(),
                 settings,
                 matching: self.matching,
                 disabled: false,

@@ -5,5 +5,6 @@ pub(crate) mod collect;
 pub(crate) mod evaluator;
 pub(crate) mod iterate;
 pub(crate) mod lift;
+pub(crate) mod output_modifiers;
 pub(crate) mod progress;
 pub(crate) mod solve;

@@ -10,3 +10,4 @@ pub(crate) mod literal_geometry;
 pub(crate) mod literal_mesh;
 pub(crate) mod syntax;
 pub(crate) mod value_text;
+pub(crate) mod write;

@@ -125,6 +125,13 @@ impl Modifier {
         Modifier::Reparameterize,
     ];
 
+    /// Whether the modifier can be set on an output (Grasshopper's output parameters have
+    /// every modifier but principal, which chooses among inputs, and degrees, which says what
+    /// unit an input's angles are in).
+    pub fn applies_to_outputs(self) -> bool {
+        !matches!(self, Modifier::Principal | Modifier::Degrees)
+    }
+
     /// The name used in graph files (`flatten`, `graft`, …).
     pub fn name(self) -> &'static str {
         match self {
@@ -163,6 +170,9 @@ pub struct GraphNode {
     pub settings: Vec<(String, Literal)>,
     /// Input modifiers, by port name.
     pub modifiers: Vec<(String, Vec<Modifier>)>,
+    /// Output modifiers, by port name: applied to the output's tree when the node has run, so
+    /// that every wire and named output reading it sees the modified tree.
+    pub output_modifiers: Vec<(String, Vec<Modifier>)>,
     /// How item inputs are matched.
     pub matching: Matching,
     /// A disabled node outputs nothing.

@@ -27,6 +27,9 @@ pub struct PlanNode {
     pub node_type: Arc<NodeType>,
     /// The node's input ports (variable inputs resolved).
     pub inputs: Vec<PlanInput>,
+    /// Per output, its modifiers in application order (applied to the output's tree when the
+    /// node has run); empty, or shorter than the outputs, for outputs without modifiers.
+    pub output_modifiers: Vec<Vec<Modifier>>,
     /// The node's settings with defaults filled in.
     pub settings: Vec<(String, Value)>,
     /// How item inputs are matched.
@@ -50,6 +53,11 @@ pub struct PlanInput {
 }
 
 impl PlanNode {
+    /// The modifiers of output `k`, in application order (none for most outputs).
+    pub fn output_modifiers(&self, k: usize) -> &[Modifier] {
+        self.output_modifiers.get(k).map_or(&[], Vec::as_slice)
+    }
+
     /// The index of the input marked principal, if any.
     pub fn principal_input(&self) -> Option<usize> {
         self.inputs

@@ -240,6 +240,50 @@ fn structural_modifiers_exclude_each_other_and_one_input_is_principal() {
 }
 
 #[test]
+fn output_modifiers_name_outputs_and_fit_their_type() {
+    let text = r#"(format: 1, nodes: [
+  (id: "v", type: "vector.two_pt", values: {"A": (0, 0, 0), "B": (1, 0, 0)},
+   output_modifiers: {"V": [principal, degrees, graft], "U": [flatten], "L": [invert]}),
+  (id: "n", type: "logic.not", values: {"A": true},
+   output_modifiers: {"R": [invert, simplify, graft], "R": [reverse]}),
+])"#;
+    assert_eq!(
+        errors(text),
+        [
+            "g.ron:3:29: error: modifier principal does not apply to output \"V\" of node \"v\" \
+             (it applies to inputs only)",
+            "g.ron:3:40: error: modifier degrees does not apply to output \"V\" of node \"v\" (it \
+             applies to inputs only)",
+            "g.ron:3:57: error: unknown output \"U\" on node \"v\" (vector.two_pt has outputs \"V\", \
+             \"L\")",
+            "g.ron:3:79: error: modifier invert does not apply to output \"L\" of node \"v\", which \
+             is of type Number (it applies to Boolean outputs)",
+            "g.ron:5:47: error: modifiers simplify and graft exclude each other on output \"R\" of \
+             node \"n\"",
+            "g.ron:5:55: error: modifiers of output \"R\" of node \"n\" are given twice",
+        ]
+    );
+}
+
+#[test]
+fn output_modifiers_go_into_the_plan_in_application_order() {
+    let text = r#"(format: 1, nodes: [
+  (id: "v", type: "vector.two_pt", values: {"A": (0, 0, 0), "B": (1, 0, 0)},
+   output_modifiers: {"Length": [reverse, flatten]}),
+  (id: "n", type: "logic.not", values: {"A": true}, output_modifiers: {"R": [invert]}),
+  (id: "plain", type: "logic.not", values: {"A": true}),
+])"#;
+    let plan = check_text(text, &common::registry()).unwrap().plan;
+    assert_eq!(plan.nodes[0].output_modifiers(0), []);
+    assert_eq!(
+        plan.nodes[0].output_modifiers(1),
+        [Modifier::Flatten, Modifier::Reverse]
+    );
+    assert_eq!(plan.nodes[1].output_modifiers(0), [Modifier::Invert]);
+    assert!(plan.nodes[2].output_modifiers.is_empty());
+}
+
+#[test]
 fn cycles_name_their_nodes() {
     let text = r#"(format: 1, nodes: [
   (id: "start", type: "params.number", values: {"N": 1}),

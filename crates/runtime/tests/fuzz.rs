@@ -138,12 +138,19 @@ fn graph_node(i: usize) -> impl Strategy<Value = GraphNode> {
             ),
             0..2,
         ),
+        proptest::collection::vec(
+            (
+                proptest::sample::select(PORTS.to_vec()),
+                proptest::collection::vec(proptest::sample::select(Modifier::ALL.to_vec()), 0..3),
+            ),
+            0..2,
+        ),
         proptest::sample::select(vec![Matching::Longest, Matching::Shortest, Matching::Cross]),
         any::<bool>(),
         0..10usize,
     )
         .prop_map(
-            move |(t, names, values, modifiers, matching, disabled, dup)| GraphNode {
+            move |(t, names, values, modifiers, outputs, matching, disabled, dup)| GraphNode {
                 // Now and then an id used twice.
                 id: NodeId(format!("n{}", if dup == 0 { 0 } else { i })),
                 node_type: t.to_owned(),
@@ -155,6 +162,13 @@ fn graph_node(i: usize) -> impl Strategy<Value = GraphNode> {
                     .collect(),
                 settings: Vec::new(),
                 modifiers: modifiers
+                    .into_iter()
+                    .map(|(p, mut m)| {
+                        m.dedup();
+                        (p.to_owned(), m)
+                    })
+                    .collect(),
+                output_modifiers: outputs
                     .into_iter()
                     .map(|(p, mut m)| {
                         m.dedup();

@@ -91,6 +91,7 @@ fn a_graph_built_in_code_survives_save_and_load() {
                 values: vec![("x".to_owned(), Literal("[1, 2, null]".to_owned()))],
                 settings: vec![("expression".to_owned(), Literal("\"x + 1\"".to_owned()))],
                 modifiers: vec![("x".to_owned(), vec![Modifier::Reverse, Modifier::Flatten])],
+                output_modifiers: vec![("R".to_owned(), vec![Modifier::Graft])],
                 matching: Matching::Cross,
                 disabled: true,
             },
@@ -224,8 +225,8 @@ fn every_structural_problem_is_reported() {
             "4:5: error: unknown field `colour` in the graph (fields: format, name, description, \
              nodes, wires, inputs, outputs, expected, expected_messages)",
             "3:11: error: expected a string in quotes for `name`, found 3",
-            "6:41: error: unknown field `size` in a node (fields: id, type, inputs, values, \
-             settings, modifiers, matching, disabled)",
+            "6:41: error: unknown field `size` in a node (fields: id, type, inputs, outputs, values, \
+             settings, modifiers, output_modifiers, matching, disabled)",
             "7:9: error: missing field `id` in a node",
             "8:51: error: expected longest, shortest or cross for `matching`, found longest_list",
             "8:75: error: expected true or false for `disabled`, found 1",

@@ -71,7 +71,7 @@ pub(super) fn warnings(node: &GraphNode) -> Vec<ExportWarning> {
             node.id
         )));
     }
-    if !setting("ghpython").is_some_and(|(_, lit)| lit.0.trim() == "true") {
+    if setting("ghpython").is_none_or(|(_, lit)| lit.0.trim() != "true") {
         out.push(ExportWarning(format!(
             "node \"{}\": GhPython gives scripts Rhino types, not the locus package's: the \
              script may need changes to run there",

@@ -91,6 +91,8 @@ struct Checker<'a> {
     sources: Vec<Vec<Vec<(usize, usize)>>>,
     /// Per node and input: the modifiers.
     modifiers: Vec<Vec<Vec<Modifier>>>,
+    /// Per node and output: the modifiers.
+    output_modifiers: Vec<Vec<Vec<Modifier>>>,
     /// Per node: the settings given, by setting index.
     settings: Vec<Vec<Option<Value>>>,
     /// Per node and input: the named input that sets it, if any.
@@ -113,6 +115,7 @@ impl<'a> Checker<'a> {
             wire_ends: Vec::new(),
             sources: Vec::new(),
             modifiers: Vec::new(),
+            output_modifiers: Vec::new(),
             settings: Vec::new(),
             named_targets: Vec::new(),
             edges: Vec::new(),

@@ -207,12 +207,14 @@ pub enum DiagnosticKind {
         /// What is wrong.
         message: String,
     },
-    /// A modifier on an input whose type it does not apply to.
+    /// A modifier on a port whose type (or direction) it does not apply to.
     ModifierNotApplicable {
         /// The node.
         node: String,
-        /// The input.
+        /// The port.
         port: String,
+        /// Whether the port is an input or an output.
+        direction: PortDirection,
         /// The modifier.
         modifier: Modifier,
         /// The input's type.
@@ -222,8 +224,10 @@ pub enum DiagnosticKind {
     ConflictingModifiers {
         /// The node.
         node: String,
-        /// The input.
+        /// The port.
         port: String,
+        /// Whether the port is an input or an output.
+        direction: PortDirection,
         /// The first modifier.
         first: Modifier,
         /// The second modifier.
@@ -393,18 +397,28 @@ impl fmt::Display for DiagnosticKind {
             ModifierNotApplicable {
                 node,
                 port,
+                direction,
                 modifier,
                 data_type,
             } => {
+                let d = direction.name();
+                if *direction == PortDirection::Output && !modifier.applies_to_outputs() {
+                    return write!(
+                        f,
+                        "modifier {} does not apply to output \"{port}\" of node \"{node}\" (it \
+                         applies to inputs only)",
+                        modifier.name()
+                    );
+                }
                 let applies = match modifier {
-                    Modifier::Invert => "Boolean inputs",
-                    Modifier::Degrees => "Number inputs",
-                    Modifier::Reparameterize => "Curve and Surface inputs",
-                    _ => "every input",
+                    Modifier::Invert => format!("Boolean {d}s"),
+                    Modifier::Degrees => format!("Number {d}s"),
+                    Modifier::Reparameterize => format!("Curve and Surface {d}s"),
+                    _ => format!("every {d}"),
                 };
                 write!(
                     f,
-                    "modifier {} does not apply to input \"{port}\" of node \"{node}\", which is \
+                    "modifier {} does not apply to {d} \"{port}\" of node \"{node}\", which is \
                      of type {data_type} (it applies to {applies})",
                     modifier.name()
                 )
@@ -412,13 +426,15 @@ impl fmt::Display for DiagnosticKind {
             ConflictingModifiers {
                 node,
                 port,
+                direction,
                 first,
                 second,
             } => write!(
                 f,
-                "modifiers {} and {} exclude each other on input \"{port}\" of node \"{node}\"",
+                "modifiers {} and {} exclude each other on {} \"{port}\" of node \"{node}\"",
                 first.name(),
-                second.name()
+                second.name(),
+                direction.name()
             ),
             SeveralPrincipalInputs { node, ports } => write!(
                 f,

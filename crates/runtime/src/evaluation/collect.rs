@@ -1,7 +1,7 @@
 //! Collecting a node's input: modifiers and casting to the port's type.
 //!
 //! Order of application (a decision where Grasshopper is silent, reference §1.4): structure
-//! first (flatten, graft, simplify, in the order the graph lists them), then reverse, then the
+//! first (flatten, graft or simplify, which exclude each other), then reverse, then the
 //! cast to the port's type, then the per-item modifiers (invert, degrees, reparameterize), which
 //! need typed items. Data that needs no change is borrowed, not copied.
 
@@ -29,34 +29,8 @@ pub(crate) fn prepare_input<'a>(
     let Some(mut tree) = raw else {
         return Ok(Cow::Owned(DataTree::new()));
     };
-    for modifier in [
-        Modifier::Flatten,
-        Modifier::Graft,
-        Modifier::Simplify,
-        Modifier::Reverse,
-    ] {
-        if !input.modifiers.contains(&modifier) {
-            continue;
-        }
-        if modifier == Modifier::Graft {
-            let entries = tree.item_count().saturating_mul(2);
-            if entries > max_items {
-                return Err(format!(
-                    "grafting input {} would make {} branches ({entries} items and branches), \
-                     above the limit of {max_items} items per output",
-                    input.port.nickname,
-                    tree.item_count()
-                ));
-            }
-        }
-        let t = tree.to_mut();
-        match modifier {
-            Modifier::Flatten => t.flatten(),
-            Modifier::Graft => t.graft(GraftMode::ALL),
-            Modifier::Simplify => t.simplify(SimplifyMode::All),
-            _ => t.reverse_items(),
-        }
-    }
+    let what = format!("input {}", input.port.nickname);
+    restructure(&mut tree, &input.modifiers, &what, max_items)?;
     let target = input.port.data_type;
     let needs_cast = target != DataType::Generic
         && tree
@@ -84,13 +58,56 @@ pub(crate) fn prepare_input<'a>(
         map_items::<f64>(tree.to_mut(), f64::to_radians);
     }
     if per_item(Modifier::Reparameterize) {
-        reparameterize(node, input, tree.to_mut(), messages);
+        reparameterize(node, &what, tree.to_mut(), messages);
     }
     Ok(tree)
 }
 
+/// The structural modifiers among `modifiers` (flatten, graft or simplify, then reverse) applied
+/// to `tree`, which is copied only when one of them is there; `what` names the port in the
+/// error (`input A`, `output R`).
+///
+/// # Errors
+/// The item-budget error when a graft would make more than `max_items` items and branches
+/// (checked before grafting, and the tree is left as it was).
+pub(crate) fn restructure(
+    tree: &mut Cow<'_, DataTree>,
+    modifiers: &[Modifier],
+    what: &str,
+    max_items: usize,
+) -> Result<(), String> {
+    for modifier in [
+        Modifier::Flatten,
+        Modifier::Graft,
+        Modifier::Simplify,
+        Modifier::Reverse,
+    ] {
+        if !modifiers.contains(&modifier) {
+            continue;
+        }
+        if modifier == Modifier::Graft {
+            let entries = tree.item_count().saturating_mul(2);
+            if entries > max_items {
+                return Err(format!(
+                    "grafting {what} would make {} branches ({entries} items and branches), \
+                     above the limit of {max_items} items per output",
+                    tree.item_count()
+                ));
+            }
+        }
+        let t = tree.to_mut();
+        match modifier {
+            Modifier::Flatten => t.flatten(),
+            Modifier::Graft => t.graft(GraftMode::ALL),
+            Modifier::Simplify => t.simplify(SimplifyMode::All),
+            _ => t.reverse_items(),
+        }
+    }
+    Ok(())
+}
+
 /// Replaces every item of type `T` by `f(item)`, keeping nulls.
-fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
+pub(crate) fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
     let branches = std::mem::take(tree).into_branches();
     let mapped = branches.into_iter().map(|(path, branch)| {
         let (mut column, nulls) = branch.into_parts();
@@ -104,10 +121,11 @@ fn map_items<T: crate::Item + Copy>(tree: &mut DataTree, f: impl Fn(T) -> T) {
     *tree = DataTree::from_branches(mapped);
 }
 
-/// Reparameterizes curves and surfaces to the domain 0 to 1 (in each direction).
-fn reparameterize(
+/// Reparameterizes curves and surfaces to the domain 0 to 1 (in each direction); `what`
+/// names the port in messages (`input C`).
+pub(crate) fn reparameterize(
     node: &NodeId,
-    input: &PlanInput,
+    what: &str,
     tree: &mut DataTree,
     messages: &mut Vec<Message>,
 ) {
@@ -133,7 +151,7 @@ fn reparameterize(
                         level: Level::Error,
                         path: Some(path.clone()),
                         index: Some(index),
-                        text: format!("input {}: cannot reparameterize: {e}", input.port.nickname),
+                        text: format!("{what}: cannot reparameterize: {e}"),
                     });
                     b.push_null();
                 }

@@ -12,9 +12,9 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use crate::evaluation::collect;
 use crate::evaluation::iterate::{NodeLimit, NodeOutput, NodeRun, run_node};
 use crate::evaluation::progress::{Progress, ProgressHook, Tracker};
+use crate::evaluation::{collect, output_modifiers};
 use crate::limits::{Budget, Watch, thread_cap};
 use crate::{DataTree, Level, LimitHit, Limits, Message, NodeError, NodeId, Plan, Prepared};
 
@@ -656,6 +656,10 @@ impl Evaluator {
             Ok(mut out) => {
                 messages.append(&mut out.messages);
                 out.messages = messages;
+                // Most nodes have no output modifiers: one length test on the hot path.
+                if !node.output_modifiers.is_empty() {
+                    output_modifiers::apply(node, &mut out, budget.max_items);
+                }
                 out
             }
             Err(payload) => {

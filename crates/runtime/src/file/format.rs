@@ -10,6 +10,9 @@ use std::ops::Range;
 
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location};
 use crate::file::syntax::{self, Field, Kind, LineIndex, Node};
+pub(crate) use crate::file::write::expected_messages_node;
+use crate::file::write::expected_node;
+pub use crate::file::write::write_graph;
 use crate::{
     ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal,
     Matching, Modifier, NodeId, PortRef, Wire,
@@ -37,6 +40,7 @@ const NODE_FIELDS: &[&str] = &[
     "values",
     "settings",
     "modifiers",
+    "output_modifiers",
     "matching",
     "disabled",
 ];
@@ -92,6 +96,8 @@ pub(crate) struct NodeSpans {
     pub settings: Vec<[Range<usize>; 2]>,
     /// Per modified port: the port name and each modifier.
     pub modifiers: Vec<(Range<usize>, Vec<Range<usize>>)>,
+    /// Per modified output: the port name and each modifier.
+    pub output_modifiers: Vec<(Range<usize>, Vec<Range<usize>>)>,
 }
 
 impl Document {
@@ -488,14 +494,24 @@ impl Reader<'_> {
                         spans.settings = entry_spans;
                     }
                 }
-                "modifiers" => {
-                    for (key, value) in self.map(v, &format!("`modifiers` of {context}")) {
-                        let Some(port) = self.string(key, "an input name") else {
+                "modifiers" | "output_modifiers" => {
+                    let inputs = f.name == "modifiers";
+                    let (what, list, list_spans) = if inputs {
+                        ("an input name", &mut node.modifiers, &mut spans.modifiers)
+                    } else {
+                        (
+                            "an output name",
+                            &mut node.output_modifiers,
+                            &mut spans.output_modifiers,
+                        )
+                    };
+                    for (key, value) in self.map(v, &format!("`{}` of {context}", f.name)) {
+                        let Some(port) = self.string(key, what) else {
                             continue;
                         };
-                        let (list, list_spans) = self.modifiers(value);
-                        node.modifiers.push((port, list));
-                        spans.modifiers.push((key.span.clone(), list_spans));
+                        let (modifiers, modifier_spans) = self.modifiers(value);
+                        list.push((port, modifiers));
+                        list_spans.push((key.span.clone(), modifier_spans));
                     }
                 }
                 "matching" => {
@@ -641,174 +657,4 @@ impl Reader<'_> {
             }
         }
     }
-}
-
-fn string_node(s: &str) -> Node {
-    Node::new(Kind::Str(s.to_owned()))
-}
-
-/// A literal's syntax for writing; text that is not valid RON is kept raw.
-fn literal_node(literal: &Literal) -> Node {
-    syntax::parse(&literal.0).unwrap_or_else(|_| Node::new(Kind::Raw(literal.0.clone())))
-}
-
-fn field(name: &str, value: Node) -> Field {
-    Field {
-        name: name.to_owned(),
-        name_span: 0..0,
-        value,
-    }
-}
-
-fn literal_map(entries: &[(String, Literal)]) -> Node {
-    Node::new(Kind::Map(
-        entries
-            .iter()
-            .map(|(k, v)| (string_node(k), literal_node(v)))
-            .collect(),
-    ))
-}
-
-fn expected_node(expected: &[(String, Literal)]) -> Node {
-    literal_map(expected)
-}
-
-/// The `expected_messages` list: one `(node: …, level: …, text: …)` struct per message.
-pub(crate) fn expected_messages_node(messages: &[ExpectedMessage]) -> Node {
-    let items = messages
-        .iter()
-        .map(|m| {
-            Node::new(Kind::Struct(
-                None,
-                vec![
-                    field("node", string_node(&m.node.0)),
-                    field("level", ident(m.level.name())),
-                    field("text", string_node(&m.text)),
-                ],
-            ))
-        })
-        .collect();
-    Node::new(Kind::List(items))
-}
-
-fn node_node(node: &GraphNode) -> Node {
-    let mut fields = vec![
-        field("id", string_node(&node.id.0)),
-        field("type", string_node(&node.node_type)),
-    ];
-    if let Some(names) = &node.input_names {
-        let names = names.iter().map(|n| string_node(n)).collect();
-        fields.push(field("inputs", Node::new(Kind::List(names))));
-    }
-    if let Some(names) = &node.output_names {
-        let names = names.iter().map(|n| string_node(n)).collect();
-        fields.push(field("outputs", Node::new(Kind::List(names))));
-    }
-    if !node.values.is_empty() {
-        fields.push(field("values", literal_map(&node.values)));
-    }
-    if !node.settings.is_empty() {
-        fields.push(field("settings", literal_map(&node.settings)));
-    }
-    if !node.modifiers.is_empty() {
-        let entries = node
-            .modifiers
-            .iter()
-            .map(|(port, list)| {
-                let names = list
-                    .iter()
-                    .map(|m| Node::new(Kind::Ident(m.name().to_owned())))
-                    .collect();
-                (string_node(port), Node::new(Kind::List(names)))
-            })
-            .collect();
-        fields.push(field("modifiers", Node::new(Kind::Map(entries))));
-    }
-    match node.matching {
-        Matching::Longest => {}
-        Matching::Shortest => fields.push(field("matching", ident("shortest"))),
-        Matching::Cross => fields.push(field("matching", ident("cross"))),
-    }
-    if node.disabled {
-        fields.push(field("disabled", Node::new(Kind::Bool(true))));
-    }
-    Node::new(Kind::Struct(None, fields))
-}
-
-fn ident(name: &str) -> Node {
-    Node::new(Kind::Ident(name.to_owned()))
-}
-
-/// Writes a graph in canonical layout (see the module docs).
-pub fn write_graph(graph: &Graph) -> String {
-    let mut out = String::from("(\n");
-    let scalar = |out: &mut String, name: &str, value: Node| {
-        let prefix = format!("    {name}: ");
-        out.push_str(&prefix);
-        syntax::write_pretty(&value, 4, prefix.len() - 4, 1, out);
-        out.push_str(",\n");
-    };
-    scalar(
-        &mut out,
-        "format",
-        Node::new(Kind::Number(FORMAT_VERSION.to_string())),
-    );
-    if !graph.name.is_empty() {
-        scalar(&mut out, "name", string_node(&graph.name));
-    }
-    if !graph.description.is_empty() {
-        scalar(&mut out, "description", string_node(&graph.description));
-    }
-    let section = |out: &mut String, name: &str, value: Node| {
-        out.push_str("    ");
-        out.push_str(name);
-        out.push_str(": ");
-        syntax::write_broken(&value, 4, out);
-        out.push_str(",\n");
-    };
-    if !graph.nodes.is_empty() {
-        let nodes = graph.nodes.iter().map(node_node).collect();
-        section(&mut out, "nodes", Node::new(Kind::List(nodes)));
-    }
-    if !graph.wires.is_empty() {
-        let wires = graph
-            .wires
-            .iter()
-            .map(|w| {
-                Node::new(Kind::Tuple(
-                    None,
-                    vec![
-                        string_node(&w.from.to_string()),
-                        string_node(&w.to.to_string()),
-                    ],
-                ))
-            })
-            .collect();
-        section(&mut out, "wires", Node::new(Kind::List(wires)));
-    }
-    if !graph.inputs.is_empty() {
-        let entries = graph
-            .inputs
-            .iter()
-            .map(|i| (string_node(&i.name), string_node(&i.target.to_string())))
-            .collect();
-        section(&mut out, "inputs", Node::new(Kind::Map(entries)));
-    }
-    if !graph.outputs.is_empty() {
-        let entries = graph
-            .outputs
-            .iter()
-            .map(|o| (string_node(&o.name), string_node(&o.source.to_string())))
-            .collect();
-        section(&mut out, "outputs", Node::new(Kind::Map(entries)));
-    }
-    if !graph.expected.is_empty() {
-        section(&mut out, "expected", expected_node(&graph.expected));
-    }
-    if !graph.expected_messages.is_empty() {
-        let messages = expected_messages_node(&graph.expected_messages);
-        section(&mut out, "expected_messages", messages);
-    }
-    out.push_str(")\n");
-    out
 }

@@ -57,6 +57,7 @@ impl<'a> Checker<'a> {
                 }
             };
             let n_inputs = resolved.as_ref().map_or(0, |r| r.inputs.len());
+            let n_outputs = resolved.as_ref().map_or(0, |r| r.outputs.len());
             let n_settings = resolved.as_ref().map_or(0, |r| r.node_type.settings.len());
             self.resolved.push(resolved);
             self.values.push(vec![None; n_inputs]);
@@ -64,6 +65,7 @@ impl<'a> Checker<'a> {
             self.wire_ends.push(vec![false; n_inputs]);
             self.sources.push(vec![Vec::new(); n_inputs]);
             self.modifiers.push(vec![Vec::new(); n_inputs]);
+            self.output_modifiers.push(vec![Vec::new(); n_outputs]);
             self.settings.push(vec![None; n_settings]);
             self.named_targets.push(vec![None; n_inputs]);
         }
@@ -186,6 +188,23 @@ impl<'a> Checker<'a> {
         None
     }
 
+    /// The output of resolved node `i` named `port`, reporting an unknown port at `at`.
+    fn find_output(&mut self, i: usize, port: &str, at: Option<usize>) -> Option<usize> {
+        let r = self.resolved[i].as_ref()?;
+        if let Some(k) = r.outputs.iter().position(|p| p.is_named(port)) {
+            return Some(k);
+        }
+        let kind = DiagnosticKind::UnknownPort {
+            node: self.graph.nodes[i].id.0.clone(),
+            node_type: r.node_type.id.clone(),
+            port: port.to_owned(),
+            direction: PortDirection::Output,
+            valid: r.outputs.iter().map(|p| p.nickname.clone()).collect(),
+        };
+        self.error(kind, at);
+        None
+    }
+
     /// Parses a literal written at `span` of the source (or without source, its own text),
     /// returning the error message and its offset in the file.
     pub(super) fn parse_literal<T>(
@@ -301,74 +320,12 @@ impl<'a> Checker<'a> {
     }
 
     pub(super) fn node_modifiers(&mut self, i: usize) {
-        let graph = self.graph;
-        let node = &graph.nodes[i];
         if self.resolved[i].is_none() {
             return;
         }
-        let spans = self.map().and_then(|m| m.nodes.get(i));
-        for (j, (port, list)) in node.modifiers.iter().enumerate() {
-            let span = spans.and_then(|s| s.modifiers.get(j));
-            let port_at = span.map(|s| s.0.start);
-            let Some(k) = self.find_input(i, port, port_at) else {
-                continue;
-            };
-            let Some(input) = self.resolved[i].as_ref().map(|r| r.inputs[k].clone()) else {
-                continue;
-            };
-            if !self.modifiers[i][k].is_empty() {
-                self.error(
-                    DiagnosticKind::Malformed {
-                        message: format!(
-                            "modifiers of input \"{}\" of node \"{}\" are given twice",
-                            input.nickname, node.id
-                        ),
-                    },
-                    port_at,
-                );
-                continue;
-            }
-            let mut accepted: Vec<Modifier> = Vec::new();
-            for (m_index, &modifier) in list.iter().enumerate() {
-                let at = span
-                    .and_then(|s| s.1.get(m_index))
-                    .map(|r| r.start)
-                    .or(port_at);
-                if !modifier_applies(modifier, input.data_type) {
-                    self.error(
-                        DiagnosticKind::ModifierNotApplicable {
-                            node: node.id.0.clone(),
-                            port: input.nickname.clone(),
-                            modifier,
-                            data_type: input.data_type,
-                        },
-                        at,
-                    );
-                    continue;
-                }
-                let structural = [Modifier::Flatten, Modifier::Graft, Modifier::Simplify];
-                if let Some(&first) = accepted
-                    .iter()
-                    .find(|m| structural.contains(m) && structural.contains(&modifier))
-                {
-                    self.error(
-                        DiagnosticKind::ConflictingModifiers {
-                            node: node.id.0.clone(),
-                            port: input.nickname.clone(),
-                            first,
-                            second: modifier,
-                        },
-                        at,
-                    );
-                    continue;
-                }
-                if !accepted.contains(&modifier) {
-                    accepted.push(modifier);
-                }
-            }
-            accepted.sort_by_key(|m| Modifier::ALL.iter().position(|a| a == m));
-            self.modifiers[i][k] = accepted;
-        }
+        self.port_modifiers(i, PortDirection::Input);
+        self.port_modifiers(i, PortDirection::Output);
+        let node = &self.graph.nodes[i];
         let principal: Vec<String> = self.modifiers[i]
             .iter()
             .enumerate()
@@ -390,9 +347,99 @@ impl<'a> Checker<'a> {
             );
         }
     }
+
+    /// The modifiers of node `i`'s inputs (`modifiers`) or outputs (`output_modifiers`).
+    fn port_modifiers(&mut self, i: usize, direction: PortDirection) {
+        let graph = self.graph;
+        let node = &graph.nodes[i];
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        let (given, given_spans) = match direction {
+            PortDirection::Input => (&node.modifiers, spans.map(|s| &s.modifiers)),
+            PortDirection::Output => (&node.output_modifiers, spans.map(|s| &s.output_modifiers)),
+        };
+        for (j, (port, list)) in given.iter().enumerate() {
+            let span = given_spans.and_then(|s| s.get(j));
+            let port_at = span.map(|s| s.0.start);
+            let found = match direction {
+                PortDirection::Input => self.find_input(i, port, port_at),
+                PortDirection::Output => self.find_output(i, port, port_at),
+            };
+            let Some(k) = found else {
+                continue;
+            };
+            let Some(r) = self.resolved[i].as_ref() else {
+                continue;
+            };
+            let (port, already) = match direction {
+                PortDirection::Input => (r.inputs[k].clone(), &self.modifiers[i][k]),
+                PortDirection::Output => (r.outputs[k].clone(), &self.output_modifiers[i][k]),
+            };
+            if !already.is_empty() {
+                self.error(
+                    DiagnosticKind::Malformed {
+                        message: format!(
+                            "modifiers of {} \"{}\" of node \"{}\" are given twice",
+                            direction.name(),
+                            port.nickname,
+                            node.id
+                        ),
+                    },
+                    port_at,
+                );
+                continue;
+            }
+            let mut accepted: Vec<Modifier> = Vec::new();
+            for (m_index, &modifier) in list.iter().enumerate() {
+                let at = span
+                    .and_then(|s| s.1.get(m_index))
+                    .map(|r| r.start)
+                    .or(port_at);
+                let applies = modifier_applies(modifier, port.data_type)
+                    && (direction == PortDirection::Input || modifier.applies_to_outputs());
+                if !applies {
+                    self.error(
+                        DiagnosticKind::ModifierNotApplicable {
+                            node: node.id.0.clone(),
+                            port: port.nickname.clone(),
+                            direction,
+                            modifier,
+                            data_type: port.data_type,
+                        },
+                        at,
+                    );
+                    continue;
+                }
+                let structural = [Modifier::Flatten, Modifier::Graft, Modifier::Simplify];
+                if let Some(&first) = accepted
+                    .iter()
+                    .find(|m| structural.contains(m) && structural.contains(&modifier))
+                {
+                    self.error(
+                        DiagnosticKind::ConflictingModifiers {
+                            node: node.id.0.clone(),
+                            port: port.nickname.clone(),
+                            direction,
+                            first,
+                            second: modifier,
+                        },
+                        at,
+                    );
+                    continue;
+                }
+                if !accepted.contains(&modifier) {
+                    accepted.push(modifier);
+                }
+            }
+            accepted.sort_by_key(|m| Modifier::ALL.iter().position(|a| a == m));
+            match direction {
+                PortDirection::Input => self.modifiers[i][k] = accepted,
+                PortDirection::Output => self.output_modifiers[i][k] = accepted,
+            }
+        }
+    }
 }
 
-/// Whether a modifier applies to an input of type `data_type`.
+/// Whether a modifier applies to a port of type `data_type`.
 fn modifier_applies(modifier: Modifier, data_type: DataType) -> bool {
     match modifier {
         Modifier::Invert => data_type == DataType::Boolean,

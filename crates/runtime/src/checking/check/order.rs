@@ -48,6 +48,7 @@ impl<'a> Checker<'a> {
         let mut values = self.values;
         let mut sources = self.sources;
         let mut modifiers = self.modifiers;
+        let mut output_modifiers = self.output_modifiers;
         for (i, (node, resolved)) in graph.nodes.iter().zip(self.resolved).enumerate() {
             // Checking passed, so every node type is known.
             let Some(r) = resolved else { continue };
@@ -90,10 +91,15 @@ impl<'a> Checker<'a> {
                         .map(|v| (s.name.clone(), v))
                 })
                 .collect();
+            let mut output_modifiers = std::mem::take(&mut output_modifiers[i]);
+            while output_modifiers.last().is_some_and(Vec::is_empty) {
+                output_modifiers.pop();
+            }
             nodes.push(PlanNode {
                 id: node.id.clone(),
                 node_type,
                 inputs,
+                output_modifiers,
                 settings,
                 matching: node.matching,
                 disabled: node.disabled,

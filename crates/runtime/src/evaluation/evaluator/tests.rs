@@ -43,6 +43,7 @@ fn node(id: &str, t: &Arc<NodeType>, inputs: Vec<PlanInput>) -> PlanNode {
         id: NodeId::from(id),
         node_type: t.clone(),
         inputs,
+        output_modifiers: vec![],
         settings: vec![],
         matching: Matching::Longest,
         disabled: false,
