@@ -48,6 +48,9 @@ const MAX_TRACE_DEPTH: usize = 30;
 /// Traced points of an arc before refinement (besides its ends).
 const INITIAL_STEPS: usize = 4;
 
+/// At most this many traced points per arc.
+const MAX_ARC_POINTS: usize = 100_000;
+
 /// Steps of the bracketed root search of a section point.
 const ROOT_STEPS: usize = 200;
 
@@ -263,6 +266,17 @@ impl Tracer<'_> {
                 .zip(&ww)
                 .all(|(a, b)| (a / b).abs() <= self.tolerance);
             if all_in_plane {
+                // A side lying in the plane is an arc of the section, unless it collapses to a
+                // point (a pole or an apex).
+                let x = x_range[usize::from(at_end)];
+                let arc = self.trace_arc([x, x], y_range, solve_u);
+                let length: f64 = arc
+                    .windows(2)
+                    .map(|w| w[0].trace.point.distance(w[1].trace.point))
+                    .sum();
+                if arc.len() >= 2 && length > self.tolerance {
+                    self.out.arcs.push(arc);
+                }
                 continue;
             }
             let x = x_range[usize::from(at_end)];
@@ -286,7 +300,7 @@ impl Tracer<'_> {
         let mut components: Vec<[f64; 2]> = Vec::new();
         for pair in breaks.windows(2) {
             let mid = 0.5 * (pair[0] + pair[1]);
-            if f_at(x_range[0], mid) * f_at(x_range[1], mid) > 0.0 {
+            if f_at(x_range[0], mid) * f_at(x_range[1], mid) >= 0.0 {
                 continue;
             }
             match components.last_mut() {
@@ -390,6 +404,9 @@ impl Tracer<'_> {
             let (u, v) = if solve_u { (x, y) } else { (y, x) };
             self.eval(u, v)
         };
+        if x_range[0] == x_range[1] {
+            return x_range[0];
+        }
         let (ea, eb) = (eval(x_range[0]), eval(x_range[1]));
         let degenerate = ea.f.abs() <= 1e-3 * self.tolerance
             && eb.f.abs() <= 1e-3 * self.tolerance
@@ -462,12 +479,29 @@ impl Tracer<'_> {
             points.windows(2).rev().map(|w| (w[0], w[1], 0)).collect();
         points.clear();
         while let Some((a, b, depth)) = stack.pop() {
-            let fine = depth >= MAX_TRACE_DEPTH || {
+            let chord = b.trace.point - a.trace.point;
+            let fine = depth >= MAX_TRACE_DEPTH
+                || out.len() >= MAX_ARC_POINTS
+                || chord.length() <= 1e-3 * self.tolerance
+                || {
                 let ym = 0.5 * (y_of(&a) + y_of(&b));
                 let m = self.point_at(x_range, ym, solve_u);
-                let turn = a.trace.tangent.dot(b.trace.tangent) >= MAX_TURN.cos();
+                // Where the surface gives no tangent (a pole), the chord stands in.
+                let direction = chord.normalize_or_zero();
+                let or_chord = |t: TracePoint| {
+                    if t.tangent == Vector3::ZERO {
+                        TracePoint {
+                            tangent: direction,
+                            ..t
+                        }
+                    } else {
+                        t
+                    }
+                };
+                let (ta, tb) = (or_chord(a.trace), or_chord(b.trace));
+                let turn = ta.tangent.dot(tb.tangent) >= MAX_TURN.cos();
                 let near = turn
-                    && distance_to_segment(&hermite_segment(&a.trace, &b.trace), m.trace.point)
+                    && distance_to_segment(&hermite_segment(&ta, &tb), m.trace.point)
                         <= 0.1 * self.tolerance;
                 if !near {
                     stack.push((m, b, depth + 1));
