@@ -107,6 +107,10 @@
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
 //! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\].
 //!
+//! **Script** ([`script`])
+//! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python
+//!   script per iteration, run in a separate Python process with the `locus` package.
+//!
 //! # Performance
 //!
 //! `cargo bench -p locus-nodes --bench library` measures the library's nodes against
@@ -170,6 +174,7 @@ pub mod intersect;
 pub mod maths;
 pub mod mesh;
 pub mod params;
+pub mod script;
 pub mod sets;
 pub mod surface;
 #[cfg(test)]
@@ -191,4 +196,5 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
     display::register(registry);
     intersect::register(registry);
+    script::register(registry);
 }
