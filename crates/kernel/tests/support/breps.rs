@@ -47,11 +47,23 @@ pub fn nurbs_surface(v: &Value) -> NurbsSurface {
     let rows = v["cvs_u_by_v"].as_array().expect("cvs_u_by_v");
     let points = rows
         .iter()
-        .map(|r| r.as_array().unwrap().iter().map(|cv| point(&cv["p"])).collect())
+        .map(|r| {
+            r.as_array()
+                .unwrap()
+                .iter()
+                .map(|cv| point(&cv["p"]))
+                .collect()
+        })
         .collect();
     let weights = rows
         .iter()
-        .map(|r| r.as_array().unwrap().iter().map(|cv| num(&cv["w"])).collect())
+        .map(|r| {
+            r.as_array()
+                .unwrap()
+                .iter()
+                .map(|cv| num(&cv["w"]))
+                .collect()
+        })
         .collect();
     NurbsSurface::new(
         v["degree_u"].as_u64().unwrap() as usize,
@@ -78,13 +90,25 @@ pub fn brep(v: &Value) -> Brep {
             interval(&v["y"]),
             interval(&v["z"]),
         )),
-        "sphere" => Brep::from_sphere(&Sphere::new(point(&v["center"]), num(&v["radius"])).unwrap()),
+        "sphere" => {
+            Brep::from_sphere(&Sphere::new(point(&v["center"]), num(&v["radius"])).unwrap())
+        }
         "cylinder" => Brep::from_cylinder(
-            &Cylinder::new(plane(&v["base_plane"]), num(&v["radius"]), num(&v["height"])).unwrap(),
+            &Cylinder::new(
+                plane(&v["base_plane"]),
+                num(&v["radius"]),
+                num(&v["height"]),
+            )
+            .unwrap(),
             v["capped"].as_bool().unwrap(),
         ),
         "cone" => Brep::from_cone(
-            &Cone::new(plane(&v["apex_plane"]), num(&v["height"]), num(&v["radius"])).unwrap(),
+            &Cone::new(
+                plane(&v["apex_plane"]),
+                num(&v["height"]),
+                num(&v["radius"]),
+            )
+            .unwrap(),
             v["capped"].as_bool().unwrap(),
         ),
         "torus" => {
