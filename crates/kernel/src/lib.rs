@@ -68,7 +68,9 @@ pub use crate::geometry::plane_fit::{LINE_SPREAD, PlaneFit};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
-pub use crate::intersect::brep_plane::{BrepSection, ContourSection, MAX_CONTOUR_PLANES};
+pub use crate::intersect::brep_plane::{
+    BrepSection, ContourSection, MAX_CONTOUR_PLANES, contour_planes,
+};
 pub use crate::intersect::curve_curve::{
     CurveCurveHit, CurveCurveIntersections, CurveOverlap, TANGENT_SINE,
 };

@@ -363,8 +363,14 @@ fn without_duplicates(pieces: Vec<Curve>, tolerance: f64) -> Vec<Curve> {
     kept
 }
 
-/// The contour planes `(k, plane)` of a box (see [`Brep::contour`]).
-pub(crate) fn contour_planes(
+/// The contour planes `(k, plane)` that meet a bounding box: the planes through
+/// `point + k·distance·n̂` normal to `n̂ = direction / |direction|`, in increasing `k` (see
+/// [`Brep::contour`]; meshes are contoured through the same planes).
+///
+/// # Errors
+/// As [`Brep::contour`]: non-finite input, a zero direction, a distance that is not positive
+/// or that needs more than [`MAX_CONTOUR_PLANES`] planes.
+pub fn contour_planes(
     bbox: crate::BoundingBox,
     point: Point3,
     direction: Vector3,

@@ -6,6 +6,8 @@
     reason = "each test binary uses its own subset of the helpers"
 )]
 
+pub mod breps;
+
 use serde_json::Value;
 
 /// Loads one oracle file (`opennurbs-cases.json` or `occt-cases.json`) as JSON, from the

@@ -1,10 +1,11 @@
 //! Grasshopper's Intersect category: lines, planes and curves against lines and planes
-//! ([`mathematical`]), meshes against rays and planes ([`mesh`]), and curves against curves and
-//! themselves ([`physical`]).
+//! ([`mathematical`]), meshes against rays and planes ([`mesh`]), sections and contours of
+//! B-reps and meshes ([`section`]), and curves against curves and themselves ([`physical`]).
 
 pub mod mathematical;
 pub mod mesh;
 pub mod physical;
+pub mod section;
 
 use locus_runtime::NodeRegistry;
 
@@ -18,4 +19,5 @@ pub fn register(registry: &mut NodeRegistry) {
     mathematical::register(registry);
     mesh::register(registry);
     physical::register(registry);
+    section::register(registry);
 }
