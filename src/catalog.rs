@@ -106,6 +106,17 @@ pub(crate) fn describe(registry: &NodeRegistry, name: &str) -> u8 {
         out!("{}", port_line(p));
     }
     out!("\n  Outputs:");
+    if let Some(v) = &t.variable_outputs {
+        let fixed: Vec<&str> = v.fixed.iter().map(|p| p.nickname.as_str()).collect();
+        if fixed.is_empty() {
+            out!("    (variable: a graph names this node's outputs; these are the defaults)");
+        } else {
+            out!(
+                "    (variable: a graph names this node's outputs after {}; these are the defaults)",
+                fixed.join(", ")
+            );
+        }
+    }
     for p in &t.outputs {
         out!("{}", port_line(p));
     }

@@ -49,6 +49,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
         id(),
         "[a-z]{1,6}\\.[a-z_]{1,8}",
         proptest::option::of(proptest::collection::vec("[a-zA-Z]{1,3}", 0..3)),
+        proptest::option::of(proptest::collection::vec("[a-zA-Z]{1,3}", 0..3)),
         proptest::collection::vec(("[A-Za-z]{1,3}", literal()), 0..3),
         proptest::collection::vec(
             (
@@ -62,11 +63,22 @@ fn node() -> impl Strategy<Value = GraphNode> {
         any::<bool>(),
     )
         .prop_map(
-            |(id, node_type, input_names, values, settings, modifiers, matching, disabled)| {
+            |(
+                id,
+                node_type,
+                input_names,
+                output_names,
+                values,
+                settings,
+                modifiers,
+                matching,
+                disabled,
+            )| {
                 GraphNode {
                     id: NodeId(id),
                     node_type,
                     input_names,
+                    output_names,
                     values,
                     settings,
                     modifiers,

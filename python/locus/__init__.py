@@ -35,6 +35,7 @@ from ._locus import (
     Transform,
     Vector3,
     __version__,
+    call,
     node_types,
 )
 from .sweep import sweep, variants
@@ -57,6 +58,7 @@ __all__ = [
     "Transform",
     "Vector3",
     "__version__",
+    "call",
     "node_types",
     "sweep",
     "variants",

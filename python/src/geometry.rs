@@ -582,6 +582,54 @@ impl PyTransform {
         Ok(Self(Transform::translation(vector_like(vector)?)))
     }
 
+    /// A rotation by `angle` radians about the axis through `center` (Rhino's
+    /// `Transform.Rotation`; right-handed about `axis`).
+    #[staticmethod]
+    #[pyo3(signature = (angle, axis=None, center=None))]
+    fn rotation(
+        angle: f64,
+        axis: Option<&Bound<'_, PyAny>>,
+        center: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let axis = axis.map_or(Ok(Vector3::new(0.0, 0.0, 1.0)), vector_like)?;
+        let center = center.map_or(Ok(Point3::ORIGIN), point_like)?;
+        Transform::rotation(angle, axis, center)
+            .map(Self)
+            .map_err(|e| kernel_error("rotation", &e))
+    }
+
+    /// A uniform scale by `factor` about `center` (Rhino's `Transform.Scale`).
+    #[staticmethod]
+    fn scale(center: &Bound<'_, PyAny>, factor: f64) -> PyResult<Self> {
+        Ok(Self(Transform::scale(point_like(center)?, factor)))
+    }
+
+    /// A scale by `x`, `y` and `z` along the axes of `plane`, about its origin.
+    #[staticmethod]
+    fn scale_non_uniform(plane: &Bound<'_, PyPlane>, x: f64, y: f64, z: f64) -> Self {
+        Self(Transform::scale_non_uniform(&plane.get().0, x, y, z))
+    }
+
+    /// The mirror image in a plane.
+    #[staticmethod]
+    fn mirror(plane: &Bound<'_, PyPlane>) -> Self {
+        Self(Transform::mirror(&plane.get().0))
+    }
+
+    /// The transform that maps plane `source` onto plane `target` (Orient).
+    #[staticmethod]
+    fn plane_to_plane(source: &Bound<'_, PyPlane>, target: &Bound<'_, PyPlane>) -> Self {
+        Self(Transform::plane_to_plane(&source.get().0, &target.get().0))
+    }
+
+    /// The inverse; `ValueError` when the matrix is singular.
+    fn inverse(&self) -> PyResult<Self> {
+        self.0
+            .inverse()
+            .map(Self)
+            .map_err(|e| kernel_error("transform", &e))
+    }
+
     /// The matrix as four rows of four numbers.
     #[getter]
     fn rows(&self) -> [[f64; 4]; 4] {

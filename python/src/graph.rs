@@ -25,12 +25,29 @@ fn thread_count(threads: usize) -> usize {
     }
 }
 
-/// The node library, registered once per process.
+/// The interpreter that imported this module (`sys.executable`), which runs script nodes.
+static INTERPRETER: OnceLock<String> = OnceLock::new();
+
+/// Records the interpreter that runs script nodes (called once, when the module is imported).
+pub(crate) fn set_interpreter(executable: String) {
+    let _ = INTERPRETER.set(executable);
+}
+
+/// The node library, registered once per process. Script nodes run in worker processes of
+/// this very interpreter (so with this `locus` package), unless `$LOCUS_PYTHON` names another.
 pub(crate) fn registry() -> &'static NodeRegistry {
     static REGISTRY: OnceLock<NodeRegistry> = OnceLock::new();
     REGISTRY.get_or_init(|| {
         let mut registry = NodeRegistry::new();
         locus_nodes::register(&mut registry);
+        let from_env = std::env::var_os(locus_nodes::script::PYTHON_ENV).is_some_and(|p| !p.is_empty());
+        let config = match INTERPRETER.get() {
+            Some(exe) if !exe.is_empty() && !from_env => {
+                locus_nodes::script::PythonConfig::Interpreter(exe.into())
+            }
+            _ => locus_nodes::script::PythonConfig::FromEnvironment,
+        };
+        registry.register(locus_nodes::script::python(config));
         registry
     })
 }

@@ -10,6 +10,7 @@ mod curves;
 mod errors;
 mod geometry;
 mod graph;
+mod script;
 mod solids;
 
 use pyo3::prelude::*;
@@ -58,6 +59,13 @@ fn _locus(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InputError", py.get_type::<errors::InputError>())?;
     m.add_function(wrap_pyfunction!(_roundtrip, m)?)?;
     m.add_function(wrap_pyfunction!(node_types, m)?)?;
+    m.add_function(wrap_pyfunction!(script::call, m)?)?;
+    m.add_function(wrap_pyfunction!(script::_script_hello, m)?)?;
+    m.add_function(wrap_pyfunction!(script::_script_fatal, m)?)?;
+    m.add_function(wrap_pyfunction!(script::_script_read_request, m)?)?;
+    m.add_function(wrap_pyfunction!(script::_script_done, m)?)?;
+    let executable: String = py.import("sys")?.getattr("executable")?.extract().unwrap_or_default();
+    graph::set_interpreter(executable);
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

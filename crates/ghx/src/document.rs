@@ -81,6 +81,11 @@ pub struct GhParam {
     /// Items that reference Rhino document geometry (`RefID`, `ReferenceData`) or hold
     /// internalised openNURBS geometry (`ON_Data`): their kinds.
     pub foreign_data: Vec<String>,
+    /// A script component's parameter: its access (`ScriptParamAccess`: 0 item, 1 list,
+    /// 2 tree).
+    pub script_access: Option<i64>,
+    /// A script component's parameter: its type hint (`TypeHintID`), lower-case.
+    pub type_hint: Option<String>,
 }
 
 /// Grasshopper's input modifiers, as the file stores them.
@@ -257,6 +262,8 @@ fn read_param(chunk: &Chunk) -> GhParam {
             param.modifiers.push(m);
         }
     }
+    param.script_access = chunk.i64("ScriptParamAccess");
+    param.type_hint = chunk.str("TypeHintID").map(str::to_ascii_lowercase);
     param.expression = chunk
         .str("InternalExpression")
         .filter(|e| !e.trim().is_empty())

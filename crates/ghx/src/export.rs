@@ -9,6 +9,7 @@
 use std::collections::HashMap;
 
 mod gradient;
+mod script;
 
 use locus_runtime::{
     DataType, Graph, GraphNode, Modifier, NodeRegistry, NodeType, Value, parse_literal,
@@ -194,6 +195,7 @@ struct Ports<'a> {
     node: &'a GraphNode,
     node_type: &'a NodeType,
     inputs: Vec<locus_runtime::Port>,
+    outputs: Vec<locus_runtime::Port>,
 }
 
 fn input_guid(node: &str, port: &str) -> String {
@@ -235,18 +237,19 @@ pub fn export_ghx(
             )));
         }
         let inputs = t.resolve_inputs(n.input_names.as_deref());
+        let outputs = t.resolve_outputs(n.output_names.as_deref());
+        if t.id == script::PYTHON {
+            warnings.extend(script::warnings(n));
+        }
         nodes.push(Ports {
             node: n,
             node_type: t,
             inputs,
+            outputs,
         });
     }
     let port_nick = |p: &Ports<'_>, name: &str, input: bool| -> String {
-        let list = if input {
-            &p.inputs
-        } else {
-            &p.node_type.outputs
-        };
+        let list = if input { &p.inputs } else { &p.outputs };
         list.iter()
             .find(|q| q.is_named(name))
             .map(|q| q.nickname.clone())
@@ -529,7 +532,8 @@ fn write_object(
                     },
                 );
             } else {
-                let variable = p.node_type.variable_inputs.is_some();
+                let variable = p.node_type.variable_inputs.is_some()
+                    || p.node_type.variable_outputs.is_some();
                 items_and_chunks(
                     o,
                     |o| {
@@ -540,6 +544,10 @@ fn write_object(
                             && let Some(Some(Value::Text(t))) = tree.values().next()
                         {
                             o.item("Expression", None, 10, &t);
+                            n += 1;
+                        }
+                        if p.node_type.id == script::PYTHON {
+                            o.item("CodeInput", None, 10, &script::code(p.node));
                             n += 1;
                         }
                         o.item("InstanceGuid", None, 9, &object_guid(id));
@@ -573,6 +581,14 @@ fn write_object(
                                         o,
                                         |o| {
                                             o.w.get_mut().extend_from_slice(&xml);
+                                            let mut n = n;
+                                            if p.node_type.id == script::PYTHON {
+                                                let (access, hint) =
+                                                    script::input_items(p.node, &port.nickname);
+                                                o.item("ScriptParamAccess", None, 3, &access);
+                                                o.item("TypeHintID", None, 9, hint);
+                                                n += 2;
+                                            }
                                             n
                                         },
                                         |o| {
@@ -586,7 +602,7 @@ fn write_object(
                                     );
                                     o.end("chunk");
                                 }
-                                for (k, port) in p.node_type.outputs.iter().enumerate() {
+                                for (k, port) in p.outputs.iter().enumerate() {
                                     o.chunk_start(out_name, Some(k));
                                     items_and_chunks(
                                         o,
@@ -613,24 +629,19 @@ fn write_object(
                                 o,
                                 |o| {
                                     o.item("InputCount", None, 3, &p.inputs.len().to_string());
-                                    o.item(
-                                        "OutputCount",
-                                        None,
-                                        3,
-                                        &p.node_type.outputs.len().to_string(),
-                                    );
+                                    o.item("OutputCount", None, 3, &p.outputs.len().to_string());
                                     2
                                 },
                                 |o| {
                                     write_ports(o, "InputParam", "OutputParam", warnings);
-                                    p.inputs.len() + p.node_type.outputs.len()
+                                    p.inputs.len() + p.outputs.len()
                                 },
                             );
                             o.end("chunk");
                             chunks += 1;
                         } else {
                             write_ports(o, "param_input", "param_output", warnings);
-                            chunks += p.inputs.len() + p.node_type.outputs.len();
+                            chunks += p.inputs.len() + p.outputs.len();
                         }
                         chunks
                     },

@@ -21,8 +21,11 @@ use crate::literal;
 use crate::report::{ComputeName, ImportDiagnostic, ObjectRef, Outcome, Report};
 
 mod gradient;
+mod script;
 mod special;
 mod wiring;
+
+pub(crate) use script::TYPE_HINTS;
 
 /// The Cluster Input object inside a cluster document.
 const CLUSTER_INPUT: &str = "448de216-7d2b-4e83-8ebf-e6ed0e6a4e0e";
@@ -363,7 +366,8 @@ impl Mapper<'_> {
             );
             return None;
         }
-        if o.outputs.len() > node_type.outputs.len() {
+        let variable_outputs = node_type.variable_outputs.as_ref();
+        if variable_outputs.is_none() && o.outputs.len() > node_type.outputs.len() {
             self.unsupported(
                 o,
                 r,
@@ -432,7 +436,43 @@ impl Mapper<'_> {
                 .map(|p| (p.nickname.clone(), p.data_type))
                 .collect()
         };
-        for (k, p) in o.outputs.iter().enumerate() {
+        if let Some(variable) = variable_outputs {
+            // Outputs named like a fixed output (a script's `out`) are that output; the others
+            // are the node's named outputs, in order.
+            let mut names = Vec::new();
+            for (k, p) in o.outputs.iter().enumerate() {
+                let fixed = variable
+                    .fixed
+                    .iter()
+                    .find(|f| f.is_named(&p.nickname) || f.is_named(&p.name));
+                let port = match fixed {
+                    Some(f) => f.nickname.clone(),
+                    None => {
+                        let name = [&p.nickname, &p.name]
+                            .into_iter()
+                            .find(|n| !n.trim().is_empty())
+                            .cloned()
+                            .unwrap_or_else(|| format!("o{k}"));
+                        names.push(name.clone());
+                        name
+                    }
+                };
+                self.sources.insert(
+                    p.instance.clone(),
+                    Source::Port(PortRef {
+                        node: id.clone(),
+                        port,
+                    }),
+                );
+            }
+            node.output_names = Some(names);
+        }
+        let fixed_outputs = if variable_outputs.is_some() {
+            &[][..]
+        } else {
+            &o.outputs[..]
+        };
+        for (k, p) in fixed_outputs.iter().enumerate() {
             let port = &node_type.outputs[k];
             if !o.floating && !port.is_named(&p.nickname) && !port.is_named(&p.name) {
                 self.diag(
@@ -509,6 +549,20 @@ impl Mapper<'_> {
                         None,
                     );
                 }
+            }
+        }
+        if node_type.id == script::PYTHON {
+            let (settings, warnings) = script::settings(o, &resolved);
+            node.settings.extend(settings);
+            for w in warnings {
+                self.diag(
+                    Level::Warning,
+                    "script-type-hint",
+                    format!("{r}: {w}"),
+                    Some(r.clone()),
+                    Some(id.clone()),
+                    None,
+                );
             }
         }
         if node_type.id == "display.gradient" {

@@ -211,6 +211,31 @@ pub const KNOWN: &[(&str, &str, Special)] = &[
         Special::HopsGet("params.text"),
     ),
     (
+        "b228887e-0852-4d9f-bd46-2591646e0d7c",
+        "Get Integer",
+        Special::HopsGet("params.integer"),
+    ),
+    (
+        "997704ba-c1d3-4262-9090-927c81347ce6",
+        "Get Point",
+        Special::HopsGet("params.point"),
+    ),
+    (
+        "88bd0e1d-363a-469f-9104-57d3aac5d6b8",
+        "Get Plane",
+        Special::HopsGet("params.plane"),
+    ),
+    (
+        "af519c71-7dc1-4524-b8cc-add5544e2ef6",
+        "Get Line",
+        Special::HopsGet("params.line"),
+    ),
+    (
+        "e83dd8b2-42aa-41e6-9254-882cddec0a2e",
+        "Get File Path",
+        Special::HopsGet("params.text"),
+    ),
+    (
         "c69bb52c-88ba-4640-b69f-188d111029e8",
         "Hops",
         Special::HopsCall,

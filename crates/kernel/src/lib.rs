@@ -72,9 +72,14 @@ pub use crate::geometry::bounding_box::BoundingBox;
 pub use crate::geometry::interval::Interval;
 pub use crate::geometry::oriented_box::OrientedBox;
 pub use crate::geometry::plane::{Plane, perpendicular_to};
+pub use crate::geometry::plane_fit::{LINE_SPREAD, PlaneFit};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::intersect::brep_plane::{BrepSection, ContourSection, MAX_CONTOUR_PLANES};
+pub use crate::intersect::curve_curve::{
+    CurveCurveHit, CurveCurveIntersections, CurveOverlap, TANGENT_SINE,
+};
 pub use crate::intersect::curve_plane::{CurveHit, CurveIntersections};
 pub use crate::intersect::linear::{line_line, line_plane, plane_plane, plane_plane_plane};
 pub use crate::intersect::mesh::{mesh_plane, mesh_ray};
@@ -84,7 +89,8 @@ pub use crate::mesh::parameters::{
     MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters,
 };
 pub use crate::mesh::{
-    Color, GRID_COINCIDENT_DISTANCE, Mesh, MeshEdge, MeshFace, MeshPoint, WELD_DISTANCE,
+    Color, GRID_COINCIDENT_DISTANCE, INDEX_MIN_FACES, Mesh, MeshEdge, MeshFace, MeshPoint,
+    PlanarTriangulation, WELD_DISTANCE,
 };
 pub use crate::surface::NurbsSurface;
 pub use crate::surface::closest_point::SurfaceClosestPoint;

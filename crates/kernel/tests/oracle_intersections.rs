@@ -6,7 +6,11 @@
 //!   planes: the point, or none;
 //! - `curve_plane`: every point (parameter, point, crossing or touching) and every overlap;
 //! - `curve_curve` where curve B is a line segment: [`Curve::intersect_line`] on B's infinite
-//!   line, the points kept that lie on the segment.
+//!   line, the points kept that lie on the segment;
+//! - every `curve_curve` case through the general [`Curve::intersect_curve`]: each point with
+//!   both parameters (a closed curve's seam at either end of its domain), tangential points to
+//!   the tangential tolerance, every overlap with its interval on both curves; the cases with a
+//!   closest approach instead of a point must find nothing.
 //!
 //! Tolerances are the file's (`tolerances` block): points 1e-9 × max(1, |coordinates|),
 //! parameters 1e-9 × the domain's length, tangential points 1e-6. Every failing case is named
@@ -15,8 +19,8 @@
 mod support;
 
 use locus_kernel::{
-    Curve, CurveIntersections, Line, NurbsCurve, Plane, Point3, Vector3, line_plane, plane_plane,
-    plane_plane_plane,
+    Curve, CurveCurveIntersections, CurveIntersections, Line, NurbsCurve, Plane, Point3, Vector3,
+    line_plane, plane_plane, plane_plane_plane,
 };
 use serde_json::Value;
 use support::{Failures, close, close3, load_oracle, num, numbers, triple};
@@ -270,4 +274,109 @@ fn curve_line_cases() {
     }
     assert!(replayed >= 6, "only {replayed} curve | line cases");
     failures.finish("curve | line");
+}
+
+/// Whether parameter `got` matches `want` on `c` to `rel` of the domain's length, where on a
+/// closed curve the two ends of the domain are the same place.
+fn same_parameter(c: &Curve, got: f64, want: f64, rel: f64) -> bool {
+    let d = c.domain();
+    let tol = rel * d.length();
+    (got - want).abs() <= tol || c.is_closed() && ((got - want).abs() - d.length()).abs() <= tol
+}
+
+fn check_curve_curve(
+    id: &str,
+    a: &Curve,
+    b: &Curve,
+    got: &CurveCurveIntersections,
+    expected: &Value,
+    failures: &mut Failures,
+) {
+    let want = expected["points"].as_array().unwrap();
+    failures.check(got.points.len() == want.len(), || {
+        format!(
+            "{id}: {} points {:?}, expected {}",
+            got.points.len(),
+            got.points
+                .iter()
+                .map(|h| (h.t_a, h.t_b))
+                .collect::<Vec<_>>(),
+            want.len()
+        )
+    });
+    for w in want {
+        let (ta, tb) = (num(&w["t_a"]), num(&w["t_b"]));
+        let rel = if w["tangential"].as_bool().unwrap_or(false) {
+            TANGENTIAL
+        } else {
+            REL
+        };
+        let p = triple(&w["point"]);
+        let Some(hit) = got.points.iter().min_by(|x, y| {
+            let d = |h: &&locus_kernel::CurveCurveHit| h.point_a.distance(Point3::from_array(p));
+            d(x).total_cmp(&d(y))
+        }) else {
+            continue;
+        };
+        failures.check(same_parameter(a, hit.t_a, ta, rel), || {
+            format!("{id}: t_a = {}, expected {ta}", hit.t_a)
+        });
+        failures.check(same_parameter(b, hit.t_b, tb, rel), || {
+            format!("{id}: t_b = {}, expected {tb}", hit.t_b)
+        });
+        failures.check(
+            close3(hit.point_a.to_array(), p, rel) && close3(hit.point_b.to_array(), p, rel),
+            || {
+                format!(
+                    "{id}: points {:?} {:?}, expected {p:?}",
+                    hit.point_a, hit.point_b
+                )
+            },
+        );
+        if w["tangential"].as_bool() == Some(true) {
+            failures.check(hit.tangential, || format!("{id}: not tangential at {ta}"));
+        }
+    }
+    let want = expected["overlaps"].as_array().unwrap();
+    failures.check(got.overlaps.len() == want.len(), || {
+        format!("{id}: overlaps {:?}, expected {want:?}", got.overlaps)
+    });
+    for (o, w) in got.overlaps.iter().zip(want) {
+        let [a0, a1] = [num(&w["a"][0]), num(&w["a"][1])];
+        let [b0, b1] = [num(&w["b"][0]), num(&w["b"][1])];
+        failures.check(
+            same_parameter(a, o.a.t0, a0, REL)
+                && same_parameter(a, o.a.t1, a1, REL)
+                && same_parameter(b, o.b.t0, b0, REL)
+                && same_parameter(b, o.b.t1, b1, REL),
+            || format!("{id}: overlap {o:?}, expected a [{a0}, {a1}] b [{b0}, {b1}]"),
+        );
+        let (s, e) = (triple(&w["start_point"]), triple(&w["end_point"]));
+        failures.check(
+            close3(a.point_at(o.a.t0).to_array(), s, REL)
+                && close3(a.point_at(o.a.t1).to_array(), e, REL),
+            || format!("{id}: overlap ends {o:?}, expected {s:?} to {e:?}"),
+        );
+    }
+}
+
+#[test]
+fn curve_curve_cases() {
+    let mut failures = Failures::default();
+    let mut replayed = 0;
+    for case in cases("curve_curve") {
+        let id = case["id"].as_str().unwrap();
+        let inputs = &case["inputs"];
+        let (a, b) = (curve(&inputs["curve_a"]), curve(&inputs["curve_b"]));
+        let tolerance = num(&inputs["tolerance"]);
+        match a.intersect_curve(&b, tolerance) {
+            Ok(got) => {
+                replayed += 1;
+                check_curve_curve(id, &a, &b, &got, &case["expected"], &mut failures);
+            }
+            Err(e) => failures.push(format!("{id}: {e}")),
+        }
+    }
+    assert_eq!(replayed, 23, "every curve | curve case is replayed");
+    failures.finish("curve | curve");
 }

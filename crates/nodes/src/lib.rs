@@ -105,6 +105,11 @@
 //!   Plane | Plane \[PPX\], Plane | Plane | Plane \[3PX\], Curve | Plane \[PCX\],
 //!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
+//! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\].
+//!
+//! **Script** ([`script`])
+//! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python
+//!   script per iteration, run in a separate Python process with the `locus` package.
 //!
 //! # Performance
 //!
@@ -169,6 +174,7 @@ pub mod intersect;
 pub mod maths;
 pub mod mesh;
 pub mod params;
+pub mod script;
 pub mod sets;
 pub mod surface;
 #[cfg(test)]
@@ -190,4 +196,5 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
     display::register(registry);
     intersect::register(registry);
+    script::register(registry);
 }

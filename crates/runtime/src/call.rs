@@ -39,6 +39,7 @@ pub struct NodeCallResult {
 pub struct NodeCall<'a> {
     node_type: &'a NodeType,
     input_names: Option<Vec<String>>,
+    output_names: Option<Vec<String>>,
     inputs: Vec<Option<DataTree>>,
     settings: Vec<(String, Value)>,
     matching: Matching,
@@ -50,6 +51,7 @@ impl<'a> NodeCall<'a> {
         Self {
             node_type,
             input_names: None,
+            output_names: None,
             inputs: Vec::new(),
             settings: Vec::new(),
             matching: Matching::Longest,
@@ -71,6 +73,12 @@ impl<'a> NodeCall<'a> {
     /// Names the inputs of a node type with variable inputs.
     pub fn input_names(mut self, names: &[&str]) -> Self {
         self.input_names = Some(names.iter().map(|s| (*s).to_owned()).collect());
+        self
+    }
+
+    /// Names the outputs of a node type with variable outputs (after its fixed outputs).
+    pub fn output_names(mut self, names: &[&str]) -> Self {
+        self.output_names = Some(names.iter().map(|s| (*s).to_owned()).collect());
         self
     }
 
@@ -118,10 +126,13 @@ impl<'a> NodeCall<'a> {
             settings.retain(|(n, _)| *n != name);
             settings.push((name, value));
         }
+        let mut node_type = self.node_type.clone();
+        node_type.outputs = node_type.resolve_outputs(self.output_names.as_deref());
+        let n_outputs = node_type.outputs.len();
         let plan = Plan {
             nodes: vec![PlanNode {
                 id: NodeId::from(self.node_type.id.as_str()),
-                node_type: Arc::new(self.node_type.clone()),
+                node_type: Arc::new(node_type),
                 inputs,
                 settings,
                 matching: self.matching,
@@ -136,7 +147,7 @@ impl<'a> NodeCall<'a> {
         let _ = evaluator.set_threads(1);
         evaluator.keep_all_outputs();
         evaluator.evaluate();
-        let outputs = (0..self.node_type.outputs.len())
+        let outputs = (0..n_outputs)
             .map(|k| evaluator.node_output_at(0, k).clone())
             .collect();
         NodeCallResult {

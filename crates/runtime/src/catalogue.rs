@@ -37,6 +37,18 @@ fn node_section(out: &mut String, t: &NodeType) {
     if t.variable_inputs.is_some() {
         out.push_str("Inputs are variable: a graph names them; the defaults are listed.\n\n");
     }
+    if let Some(v) = &t.variable_outputs {
+        let fixed: Vec<&str> = v.fixed.iter().map(|p| p.nickname.as_str()).collect();
+        if fixed.is_empty() {
+            out.push_str("Outputs are variable: a graph names them; the defaults are listed.\n\n");
+        } else {
+            let _ = writeln!(
+                out,
+                "Outputs are variable: a graph names them, after {}; the defaults are listed.\n",
+                fixed.join(", ")
+            );
+        }
+    }
     out.push_str("| port | nickname | type | access | default | description |\n");
     out.push_str("| --- | --- | --- | --- | --- | --- |\n");
     for p in &t.inputs {

@@ -154,6 +154,9 @@ pub struct GraphNode {
     pub node_type: String,
     /// For node types with variable inputs: the names of this node's inputs.
     pub input_names: Option<Vec<String>>,
+    /// For node types with variable outputs: the names of this node's outputs (after the
+    /// type's fixed outputs).
+    pub output_names: Option<Vec<String>>,
     /// Values of unconnected inputs, by port name (Grasshopper's persistent data).
     pub values: Vec<(String, Literal)>,
     /// Node-level settings by name (the Expression node's formula).

@@ -146,6 +146,14 @@
 //!   was doing; the benchmark also prints the process CPU time, 1.10–1.37× that of one thread
 //!   (the 1.74× run was the quietest, at 1.10×). The 1.7× target is therefore reached only when
 //!   the second core is free; under a load average of 7 two threads were no faster at all.
+//! - Cost per node against the graph's size (issue 16, part 3; `chain length` in the same
+//!   bench, which prints the wall and CPU time per node): chains of 1,000, 10,000 and 100,000
+//!   Additions cost 1.00 : 1.21 : 1.69 in CPU time per node before (0.56, 0.68, 0.95 µs) and
+//!   1.00 : 1.04 : 1.34 after (0.50, 0.51, 0.67 µs), at a load average of 10 (see
+//!   `docs/performance.md`, "Graph size"). What grew was memory traffic, not work: the
+//!   instructions per node were the same at every size (callgrind). The evaluator no longer
+//!   allocates a vector per depth and arrays as long as the graph on each evaluation, and reads
+//!   each node's ports, wires and outputs from flat tables in node order (`evaluator/layout.rs`).
 //! - Reading and checking the 1,000-node graph were quoted at 9.2 and 8.7 ms under a load
 //!   average of 8–11; in this session they took 2.3 and 2.2 ms (the reader and checker are
 //!   unchanged apart from inline tree paths).
@@ -202,7 +210,7 @@ pub use crate::limits::{
 pub use crate::message::{Level, Message};
 pub use crate::node::{
     Access, Matching, NodeConfig, NodeError, NodeType, Port, PrepareFn, Prepared, Setting, SolveFn,
-    ValueConstraint, VariableInputs,
+    ValueConstraint, VariableInputs, VariableOutputs,
 };
 pub use crate::plan::{Plan, PlanInput, PlanNode};
 pub use crate::registry::NodeRegistry;

@@ -184,6 +184,19 @@ pub struct VariableInputs {
     pub default_names: Vec<String>,
 }
 
+/// The template for the outputs of a node with a variable number of outputs (a script's
+/// results). A graph names the outputs of each such node.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VariableOutputs {
+    /// The port every variable output is made from; its name and nickname are replaced.
+    pub template: Port,
+    /// The outputs that keep their declaration whatever the graph names (a script's `out`,
+    /// which carries what it printed), and stay first.
+    pub fixed: Vec<Port>,
+    /// The output names a new node starts with, after the fixed ones.
+    pub default_names: Vec<String>,
+}
+
 /// A node-level setting that is not a port, such as the Expression node's formula.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Setting {
@@ -283,6 +296,8 @@ pub struct NodeType {
     pub outputs: Vec<Port>,
     /// Present when the inputs are variable; `inputs` then holds the default set.
     pub variable_inputs: Option<VariableInputs>,
+    /// Present when the outputs are variable; `outputs` then holds the default set.
+    pub variable_outputs: Option<VariableOutputs>,
     /// Node-level settings.
     pub settings: Vec<Setting>,
     /// The solve function.
@@ -325,6 +340,7 @@ impl NodeType {
             inputs: Vec::new(),
             outputs: Vec::new(),
             variable_inputs: None,
+            variable_outputs: None,
             settings: Vec::new(),
             solve: Arc::new(|_| Ok(())),
             prepare: None,
@@ -378,6 +394,22 @@ impl NodeType {
         self
     }
 
+    /// Makes the outputs variable: each graph node names its outputs, all made from
+    /// `template`, after the `fixed` outputs (which a graph does not name); `default_names` are
+    /// the outputs of a node that names none. Outputs added before are the fixed ones.
+    pub fn variable_outputs(mut self, template: Port, default_names: &[&str]) -> Self {
+        let fixed = std::mem::take(&mut self.outputs);
+        self.outputs = fixed.clone();
+        self.outputs
+            .extend(default_names.iter().map(|n| variable_port(&template, n)));
+        self.variable_outputs = Some(VariableOutputs {
+            template,
+            fixed,
+            default_names: default_names.iter().map(|s| (*s).to_owned()).collect(),
+        });
+        self
+    }
+
     /// Adds a setting.
     pub fn setting(
         mut self,
@@ -423,6 +455,21 @@ impl NodeType {
                 .map(|n| variable_port(&var.template, n))
                 .collect(),
             _ => self.inputs.clone(),
+        }
+    }
+
+    /// The output ports of a node instance that names `names` as its variable outputs (the
+    /// fixed outputs first), or the declared outputs when the type has fixed outputs or
+    /// `names` is `None`.
+    pub fn resolve_outputs(&self, names: Option<&[String]>) -> Vec<Port> {
+        match (&self.variable_outputs, names) {
+            (Some(var), Some(names)) => var
+                .fixed
+                .iter()
+                .cloned()
+                .chain(names.iter().map(|n| variable_port(&var.template, n)))
+                .collect(),
+            _ => self.outputs.clone(),
         }
     }
 

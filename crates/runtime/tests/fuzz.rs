@@ -148,6 +148,7 @@ fn graph_node(i: usize) -> impl Strategy<Value = GraphNode> {
                 id: NodeId(format!("n{}", if dup == 0 { 0 } else { i })),
                 node_type: t.to_owned(),
                 input_names: names,
+                output_names: None,
                 values: values
                     .into_iter()
                     .map(|(p, v)| (p.to_owned(), Literal(v.to_owned())))

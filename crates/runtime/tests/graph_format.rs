@@ -87,6 +87,7 @@ fn a_graph_built_in_code_survives_save_and_load() {
                 id: NodeId::from("e"),
                 node_type: "math.expression".to_owned(),
                 input_names: Some(vec!["x".to_owned(), "long name".to_owned()]),
+                output_names: Some(vec!["r".to_owned()]),
                 values: vec![("x".to_owned(), Literal("[1, 2, null]".to_owned()))],
                 settings: vec![("expression".to_owned(), Literal("\"x + 1\"".to_owned()))],
                 modifiers: vec![("x".to_owned(), vec![Modifier::Reverse, Modifier::Flatten])],

@@ -7,6 +7,7 @@ pub(crate) mod interval;
 pub(crate) mod oriented_box;
 pub(crate) mod oriented_box_boundary;
 pub(crate) mod plane;
+pub(crate) mod plane_fit;
 pub(crate) mod point;
 pub mod tolerance;
 pub(crate) mod vector;

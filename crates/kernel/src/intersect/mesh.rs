@@ -1,7 +1,8 @@
 //! Meshes against rays and planes (Rhino's `Intersection.MeshRay` and `MeshPlane`).
 //!
-//! A ray hits the triangle nearest its start (Möller and Trumbore's test on every triangle; quads
-//! are their two triangles). A plane cuts each triangle whose vertices lie on both sides of it
+//! A ray hits the triangle nearest its start (Möller and Trumbore's test on every triangle, quads
+//! as their two triangles, or on the triangles whose boxes the ray meets in the mesh's spatial
+//! index once the mesh is queried again). A plane cuts each triangle whose vertices lie on both sides of it
 //! in one segment, between two of its edges; segments that share an edge (the same two vertex
 //! indices) or, across unwelded seams, an end point within the tolerance, are chained into
 //! polylines, closed where the chain comes back to its start. A vertex exactly on the plane
@@ -18,6 +19,16 @@ use crate::{Mesh, Plane, Point3, Polyline, Vector3};
 pub fn mesh_ray(mesh: &Mesh, start: Point3, direction: Vector3) -> Option<(f64, Point3, usize)> {
     if !start.is_finite() || !direction.is_finite() || direction.length_squared() == 0.0 {
         return None;
+    }
+    if let Some(index) = mesh.face_index() {
+        let best = index
+            .along_ray(start, direction)
+            .filter_map(|t| {
+                let [p0, p1, p2] = t.corners;
+                ray_triangle(start, direction, p0, p1, p2).map(|hit| (hit, t.order()))
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        return best.map(|(t, (face, _))| (t, start + direction * t, face as usize));
     }
     let v = mesh.vertices();
     let mut best: Option<(f64, usize)> = None;

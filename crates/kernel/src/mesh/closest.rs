@@ -2,8 +2,9 @@
 //! barycentric weights on that face's corners, as openNURBS's `ON_MESH_POINT` holds them.
 //!
 //! Every triangle is tested (quads as their two triangles), so a query costs one pass over the
-//! faces; the closest point of a triangle is found by Voronoi regions (Ericson, *Real-Time
-//! Collision Detection*, 5.1.5).
+//! faces, or a search of the mesh's spatial index (`index.rs`) once the mesh is queried again;
+//! the closest point of a triangle is found by Voronoi regions (Ericson, *Real-Time Collision
+//! Detection*, 5.1.5).
 
 use crate::{Mesh, Point3, Vector3};
 
@@ -23,31 +24,31 @@ pub struct MeshPoint {
 
 impl Mesh {
     /// The point of the mesh closest to `point`; `None` for a mesh without faces. Ties go to
-    /// the lower face index.
+    /// the lower face index. Large meshes asked more than once are searched through their
+    /// spatial index (`index.rs`), with the same answers.
     pub fn closest_point(&self, point: Point3) -> Option<MeshPoint> {
+        if let Some(index) = self.face_index() {
+            let (nearest, _) = index.nearest(point);
+            let best = nearest.into_iter().min_by_key(|t| t.order())?;
+            return Some(on_triangle(
+                point,
+                best.corners,
+                best.face as usize,
+                best.half,
+            ));
+        }
         let v = self.vertices();
         let mut best: Option<MeshPoint> = None;
         for (face_index, face) in self.faces().iter().enumerate() {
-            let [a, b, c, d] = face.vertices;
-            let mut halves = vec![([a, b, c], [0, 1, 2])];
-            if !face.is_triangle() {
-                halves.push(([a, c, d], [0, 2, 3]));
-            }
-            for (corners, slots) in halves {
-                let [p, q, r] = corners.map(|i| v[i as usize]);
-                let (on, w) = closest_on_triangle(point, p, q, r);
-                let distance = on.distance(point);
-                if best.is_none_or(|b| distance < b.distance) {
-                    let mut weights = [0.0; 4];
-                    for (slot, weight) in slots.into_iter().zip(w) {
-                        weights[slot] += weight;
-                    }
-                    best = Some(MeshPoint {
-                        point: on,
-                        face: face_index,
-                        weights,
-                        distance,
-                    });
+            for (half, corners) in face.triangles().enumerate() {
+                let candidate = on_triangle(
+                    point,
+                    corners.map(|i| v[i as usize]),
+                    face_index,
+                    half as u8,
+                );
+                if best.is_none_or(|b| candidate.distance < b.distance) {
+                    best = Some(candidate);
                 }
             }
         }
@@ -55,8 +56,31 @@ impl Mesh {
     }
 }
 
+/// The closest point to `point` of the triangle `half` (0: `a b c`, 1: a quad's `a c d`) of face
+/// `face`, whose corners are `corners`.
+fn on_triangle(point: Point3, corners: [Point3; 3], face: usize, half: u8) -> MeshPoint {
+    let [p, q, r] = corners;
+    let (on, w) = closest_on_triangle(point, p, q, r);
+    let slots = if half == 0 { [0, 1, 2] } else { [0, 2, 3] };
+    let mut weights = [0.0; 4];
+    for (slot, weight) in slots.into_iter().zip(w) {
+        weights[slot] += weight;
+    }
+    MeshPoint {
+        point: on,
+        face,
+        weights,
+        distance: on.distance(point),
+    }
+}
+
 /// The point of triangle `a b c` closest to `p`, and its barycentric weights.
-fn closest_on_triangle(p: Point3, a: Point3, b: Point3, c: Point3) -> (Point3, [f64; 3]) {
+pub(super) fn closest_on_triangle(
+    p: Point3,
+    a: Point3,
+    b: Point3,
+    c: Point3,
+) -> (Point3, [f64; 3]) {
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(ap), ac.dot(ap));
     if d1 <= 0.0 && d2 <= 0.0 {

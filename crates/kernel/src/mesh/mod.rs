@@ -8,11 +8,13 @@
 mod closest;
 mod edges;
 mod grid;
+pub(crate) mod index;
 mod measure;
 pub(crate) mod parameters;
 mod polyline;
 mod sampling;
 mod tessellate;
+mod triangulation;
 mod weld;
 
 use std::collections::HashMap;
@@ -20,6 +22,8 @@ use std::collections::HashMap;
 pub use closest::MeshPoint;
 pub use edges::MeshEdge;
 pub use grid::GRID_COINCIDENT_DISTANCE;
+pub use index::INDEX_MIN_FACES;
+pub use triangulation::PlanarTriangulation;
 pub use weld::WELD_DISTANCE;
 
 use crate::{BoundingBox, Error, Point3, Result, Transform, Vector3};
@@ -137,6 +141,8 @@ pub struct Mesh {
     faces: Vec<MeshFace>,
     normals: Option<Vec<Vector3>>,
     colors: Option<Vec<Color>>,
+    /// The spatial index of the faces, built when queries need it (`index.rs`).
+    index: index::IndexCache,
 }
 
 impl Mesh {
@@ -173,6 +179,7 @@ impl Mesh {
             faces,
             normals: None,
             colors: None,
+            index: index::IndexCache::default(),
         })
     }
 
@@ -369,11 +376,19 @@ impl Mesh {
 
     /// The mesh with every face reversed (and normals negated).
     pub fn flipped(&self) -> Self {
+        self.flipped_parts(true, true)
+    }
+
+    /// The mesh with its vertex normals negated (`vertex_normals`) and every face's vertex
+    /// order reversed (`orientation`), as Rhino's `Mesh.Flip`.
+    pub fn flipped_parts(&self, vertex_normals: bool, orientation: bool) -> Self {
         let mut mesh = self.clone();
-        for face in &mut mesh.faces {
-            *face = face.flipped();
+        if orientation {
+            for face in &mut mesh.faces {
+                *face = face.flipped();
+            }
         }
-        if let Some(normals) = &mut mesh.normals {
+        if vertex_normals && let Some(normals) = &mut mesh.normals {
             for n in normals {
                 *n = -*n;
             }
@@ -413,9 +428,16 @@ impl Mesh {
         Ok(mesh)
     }
 
+    /// The spatial index of the faces, when a query should use one (see `index.rs`: built on
+    /// the second query of a large mesh).
+    pub(crate) fn face_index(&self) -> Option<&index::FaceIndex> {
+        self.index.get(self)
+    }
+
     /// Appends another mesh (its vertices and faces follow this mesh's). Normals and colours
     /// are kept only when both meshes have them.
     pub fn append(&mut self, other: &Mesh) {
+        self.index.clear();
         let offset = self.vertices.len() as u32;
         self.vertices.extend_from_slice(&other.vertices);
         self.faces.extend(other.faces.iter().map(|f| MeshFace {

@@ -178,6 +178,7 @@ impl Mesh {
             faces,
             normals: None,
             colors: None,
+            index: Default::default(),
         };
         if self.colors().is_some() {
             mesh.colors = Some(colors);

@@ -1,8 +1,10 @@
 //! Grasshopper's Intersect category: lines, planes and curves against lines and planes
-//! ([`mathematical`]), and meshes against rays and planes ([`mesh`]).
+//! ([`mathematical`]), meshes against rays and planes ([`mesh`]), and curves against curves and
+//! themselves ([`physical`]).
 
 pub mod mathematical;
 pub mod mesh;
+pub mod physical;
 
 use locus_runtime::NodeRegistry;
 
@@ -15,4 +17,5 @@ pub const INTERSECTION_TOLERANCE: f64 = 0.001;
 pub fn register(registry: &mut NodeRegistry) {
     mathematical::register(registry);
     mesh::register(registry);
+    physical::register(registry);
 }

@@ -1,7 +1,8 @@
 //! Grasshopper's Mesh category: turning B-reps into meshes and mesh primitives
 //! ([`primitive`], with meshing [`settings`]), meshes from and to their parts ([`construct`]),
 //! grids of quads on planes, boxes and surfaces ([`grid`]), measuring meshes ([`analysis`],
-//! [`faces`], [`edges`]), colouring them ([`colours`]) and editing them ([`util`]).
+//! [`faces`], [`edges`]), colouring them ([`colours`]), editing them ([`util`]) and triangulating points in a plane
+//! ([`triangulation`]: Delaunay meshes and edges, Voronoi cells, convex hulls).
 //!
 //! Meshes are the kernel's [`locus_kernel::Mesh`]: triangles and quads with optional vertex
 //! normals and colours. B-reps, surfaces and boxes wired into a Mesh port are meshed with the
@@ -15,6 +16,7 @@ pub mod faces;
 pub mod grid;
 pub mod primitive;
 pub mod settings;
+pub mod triangulation;
 pub mod util;
 
 use locus_runtime::{NodeError, NodeRegistry, NodeType, Shared, Solve};
@@ -32,6 +34,7 @@ pub fn register(registry: &mut NodeRegistry) {
     settings::register(registry);
     edges::register(registry);
     colours::register(registry);
+    triangulation::register(registry);
 }
 
 /// A node of the Mesh category.

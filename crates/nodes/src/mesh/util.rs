@@ -82,19 +82,49 @@ pub fn unweld_mesh() -> NodeType {
         })
 }
 
-/// Flip Mesh \[FlipM\]: a mesh with every face reversed.
+/// Flip Mesh \[FlipM\]: a mesh with its faces reversed and its vertex normals negated.
 pub fn flip_mesh() -> NodeType {
+    let flag = |name: &str, nickname: &str, doc: &str| {
+        Port::new(name, nickname, DataType::Boolean)
+            .default_value(true)
+            .doc(doc)
+    };
     mesh_node(FLIP_MESH, "Flip Mesh", "FlipM", "Util")
         .gh_guid("47fbc929-e88a-4a13-882e-dad84763256d")
         .description(
-            "Flips the normals of a mesh: every face's vertex order is reversed and every \
-             vertex normal negated, so a closed mesh's volume changes sign.",
+            "Flips the normals of a mesh, as Rhino's Mesh.Flip: Vertex Normals negates the \
+             stored vertex normals, Face Orientation reverses every face's vertex order (so a \
+             closed mesh's volume changes sign). locus derives face normals from the face \
+             orientation, so Face Normals follows Face Orientation; a different choice is \
+             reported.",
         )
         .input(Port::new("Mesh", "M", DataType::Mesh).doc("The mesh to flip."))
-        .output(Port::new("Mesh", "M", DataType::Mesh).doc("The flipped mesh."))
+        .input(flag("Vertex Normals", "Vn", "Negate the vertex normals."))
+        .input(flag(
+            "Face Normals",
+            "Fn",
+            "Flip the face normals (they follow Fo in locus).",
+        ))
+        .input(flag(
+            "Face Orientation",
+            "Fo",
+            "Reverse the vertex order of every face.",
+        ))
+        .output(Port::new("Result", "R", DataType::Mesh).doc("The flipped mesh."))
         .solve(|s| {
             let m = mesh_item(s, 0)?;
-            s.set(0, Shared::new(m.flipped()));
+            let (normals, faces, orientation) = (
+                *s.item::<bool>(1)?,
+                *s.item::<bool>(2)?,
+                *s.item::<bool>(3)?,
+            );
+            if faces != orientation {
+                s.warning(format!(
+                    "Face Normals is {faces} but Face Orientation is {orientation}: locus \
+                     derives face normals from the orientation, so they follow Fo"
+                ));
+            }
+            s.set(0, Shared::new(m.flipped_parts(normals, orientation)));
             Ok(())
         })
 }
@@ -159,6 +189,50 @@ mod tests {
             .input(DataTree::from_value(Value::Text("no".into())))
             .run();
         assert!(!r.messages.is_empty());
+    }
+
+    #[test]
+    fn flip_can_keep_the_faces_or_the_normals() {
+        let mesh = || {
+            let m = triangle(0.0).with_computed_normals();
+            DataTree::from_value(Value::Mesh(Shared::new(m)))
+        };
+        let flag = |b: bool| DataTree::from_value(Value::Boolean(b));
+        // Vertex normals only: the faces keep their order, the normals point down.
+        let r = NodeCall::new(&flip_mesh())
+            .input(mesh())
+            .input(flag(true))
+            .input(flag(false))
+            .input(flag(false))
+            .run();
+        assert_clean(&r);
+        let m = only::<Shared<Mesh>>(&r, 0);
+        assert_eq!(m.faces()[0], MeshFace::triangle(0, 1, 2));
+        assert!(m.normals().unwrap().iter().all(|n| n.z == -1.0));
+        // Orientation only: faces reversed, normals kept.
+        let r = NodeCall::new(&flip_mesh())
+            .input(mesh())
+            .input(flag(false))
+            .input(flag(true))
+            .input(flag(true))
+            .run();
+        assert_clean(&r);
+        let m = only::<Shared<Mesh>>(&r, 0);
+        assert_eq!(m.faces()[0], MeshFace::triangle(0, 2, 1));
+        assert!(m.normals().unwrap().iter().all(|n| n.z == 1.0));
+        // Face normals without the orientation: done as Fo says, with a warning.
+        let r = NodeCall::new(&flip_mesh())
+            .input(mesh())
+            .input(flag(true))
+            .input(flag(true))
+            .input(flag(false))
+            .run();
+        assert_eq!(r.messages.len(), 1, "{:?}", r.messages);
+        assert!(r.messages[0].text.contains("follow Fo"));
+        assert_eq!(
+            only::<Shared<Mesh>>(&r, 0).faces()[0],
+            MeshFace::triangle(0, 1, 2)
+        );
     }
 
     #[test]

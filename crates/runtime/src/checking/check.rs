@@ -68,6 +68,8 @@ impl Document {
 struct Resolved<'r> {
     node_type: &'r NodeType,
     inputs: Vec<Port>,
+    /// The node's outputs: the type's, or the ones it names when they are variable.
+    outputs: Vec<Port>,
 }
 
 struct Checker<'a> {

@@ -66,10 +66,19 @@ enum Threads {
     Pool(Arc<rayon::ThreadPool>),
 }
 
+/// The order of one evaluation: the dirty nodes grouped by depth.
+#[derive(Clone, Debug, Default)]
+struct Schedule {
+    /// Depth `d`'s nodes are `by_depth[starts[d]..starts[d + 1]]`.
+    starts: Vec<usize>,
+    /// Scratch for the counting sort.
+    next: Vec<usize>,
+    by_depth: Vec<usize>,
+}
+
 /// The state of one node between evaluations.
 #[derive(Clone, Debug, Default)]
 struct NodeState {
-    outputs: Vec<Arc<DataTree>>,
     messages: Vec<Message>,
     dirty: bool,
     prepared: Option<Result<Prepared, NodeError>>,
@@ -100,8 +109,14 @@ pub struct Evaluator {
     depth: Vec<usize>,
     threads: Threads,
     last_run: Vec<usize>,
-    /// For each node, its input ports (as the solve function sees them).
-    ports: Vec<Vec<crate::Port>>,
+    /// Every node's ports, wires and outputs as flat tables (`layout.rs`).
+    layout: Layout,
+    /// Every node's latest outputs, node after node (`Layout::outputs`).
+    outputs: Vec<Arc<DataTree>>,
+    /// The empty tree that released outputs share (no allocation per output).
+    empty: Arc<DataTree>,
+    /// The last evaluation's order, kept for its allocations.
+    schedule: Schedule,
     limits: Limits,
     /// The first limit the last evaluation hit.
     limit_hit: Option<LimitHit>,
@@ -112,9 +127,6 @@ pub struct Evaluator {
     held_total: usize,
     /// The observer told of each evaluation's progress, if any.
     progress: Option<ProgressHook>,
-    /// For each node, which outputs are read by a wire or a named output (the others are
-    /// computed only when a host asks for them).
-    wanted: Vec<Vec<bool>>,
 }
 
 impl Evaluator {
@@ -145,13 +157,7 @@ impl Evaluator {
         let states = plan
             .nodes
             .iter()
-            .map(|node| NodeState {
-                outputs: node
-                    .node_type
-                    .outputs
-                    .iter()
-                    .map(|_| Arc::new(DataTree::new()))
-                    .collect(),
+            .map(|_| NodeState {
                 messages: Vec::new(),
                 dirty: true,
                 prepared: None,
@@ -159,15 +165,15 @@ impl Evaluator {
                 late: Vec::new(),
             })
             .collect();
-        let wanted = late::wanted_outputs(&plan);
         let overrides = vec![None; plan.inputs.len()];
-        let ports = plan
-            .nodes
-            .iter()
-            .map(|node| node.inputs.iter().map(|input| input.port.clone()).collect())
-            .collect();
+        let layout = Layout::new(&plan);
+        let empty = Arc::new(DataTree::new());
+        let outputs = vec![Arc::clone(&empty); layout.wanted.len()];
         Self {
-            ports,
+            layout,
+            outputs,
+            empty,
+            schedule: Schedule::default(),
             plan,
             states,
             overrides,
@@ -181,7 +187,6 @@ impl Evaluator {
             held: vec![0; n],
             held_total: 0,
             progress: None,
-            wanted,
         }
     }
 
@@ -347,19 +352,53 @@ impl Evaluator {
     }
 
     fn evaluate_dirty(&mut self, parallel: bool) {
-        let dirty: Vec<usize> = self
-            .plan
-            .order
-            .iter()
-            .copied()
-            .filter(|&i| self.states[i].dirty)
-            .collect();
-        // Group by depth: nodes of one depth never feed each other.
-        let max_depth = dirty.iter().map(|&i| self.depth[i]).max().unwrap_or(0);
-        let mut waves: Vec<Vec<usize>> = vec![Vec::new(); max_depth + 1];
-        for &i in &dirty {
-            waves[self.depth[i]].push(i);
+        // The dirty nodes grouped by depth (nodes of one depth never feed each other), in plan
+        // order within a depth: a counting sort into one array, so that the cost per node does
+        // not depend on the graph's size (no vector per depth).
+        // The arrays are kept from one evaluation to the next: allocating and freeing arrays as
+        // long as the graph on every evaluation made the allocator consolidate its free lists
+        // and the kernel clear fresh pages, a cost per node that grew with the graph.
+        let mut schedule = std::mem::take(&mut self.schedule);
+        let Schedule {
+            starts,
+            next,
+            by_depth,
+        } = &mut schedule;
+        starts.clear();
+        for &i in &self.plan.order {
+            if self.states[i].dirty {
+                let d = self.depth[i];
+                if starts.len() <= d + 1 {
+                    starts.resize(d + 2, 0);
+                }
+                starts[d + 1] += 1;
+            }
         }
+        for d in 1..starts.len() {
+            starts[d] += starts[d - 1];
+        }
+        let total = starts.last().copied().unwrap_or(0);
+        by_depth.clear();
+        by_depth.resize(total, 0);
+        next.clear();
+        next.extend_from_slice(starts);
+        for &i in &self.plan.order {
+            if self.states[i].dirty {
+                let slot = &mut next[self.depth[i]];
+                by_depth[*slot] = i;
+                *slot += 1;
+            }
+        }
+        self.run_schedule(&schedule, parallel);
+        self.schedule = schedule;
+    }
+
+    /// Runs the nodes of `schedule`, wave after wave.
+    fn run_schedule(&mut self, schedule: &Schedule, parallel: bool) {
+        let Schedule {
+            starts, by_depth, ..
+        } = schedule;
+        let total = by_depth.len();
         let budget = Budget {
             max_items: self.limits.max_items_per_output,
             watch: Watch::start(&self.limits),
@@ -368,13 +407,15 @@ impl Evaluator {
         self.not_run.clear();
         self.last_run.clear();
         let hook = self.progress.clone();
-        let tracker = Tracker::start(hook.as_ref(), dirty.len());
-        for (w, wave) in waves.iter().enumerate() {
+        let tracker = Tracker::start(hook.as_ref(), total);
+        let mut results: Vec<(usize, NodeOutput)> = Vec::new();
+        for w in 0..starts.len().saturating_sub(1) {
+            let wave = &by_depth[starts[w]..starts[w + 1]];
             if wave.is_empty() {
                 continue;
             }
             if let Some(hit) = budget.watch.check() {
-                self.stop(hit, &waves[w..]);
+                self.stop(hit, &by_depth[starts[w]..]);
                 return;
             }
             for &i in wave {
@@ -387,14 +428,14 @@ impl Evaluator {
                 let id = self.plan.nodes[i].id.0.as_str();
                 (i, tracker.node(id, || self.run(i, parallel, &budget)))
             };
-            let results: Vec<(usize, NodeOutput)> = if parallel && wave.len() > 1 {
-                wave.par_iter().map(|&i| run(i)).collect()
+            if parallel && wave.len() > 1 {
+                results.par_extend(wave.par_iter().map(|&i| run(i)));
             } else {
-                wave.iter().map(|&i| run(i)).collect()
-            };
+                results.extend(wave.iter().map(|&i| run(i)));
+            }
             self.last_run.extend_from_slice(wave);
             let mut stopped = None;
-            for (i, mut out) in results {
+            for (i, mut out) in results.drain(..) {
                 match out.limit.take() {
                     Some(NodeLimit::Watch) => {
                         let hit = budget.watch.check().unwrap_or(LimitHit::Cancelled);
@@ -411,7 +452,7 @@ impl Evaluator {
                 self.store(i, out);
             }
             if let Some(hit) = stopped {
-                self.stop(hit, &waves[w + 1..]);
+                self.stop(hit, &by_depth[starts[w + 1]..]);
                 return;
             }
         }
@@ -426,9 +467,9 @@ impl Evaluator {
 
     /// Stops the evaluation: the nodes of the remaining waves are not run (empty outputs, still
     /// dirty for the next evaluation).
-    fn stop(&mut self, hit: LimitHit, waves: &[Vec<usize>]) {
+    fn stop(&mut self, hit: LimitHit, rest: &[usize]) {
         self.hit(hit);
-        for &i in waves.iter().flatten() {
+        for &i in rest {
             self.release(i);
             self.states[i].messages.clear();
             self.not_run.push(i);
@@ -437,8 +478,8 @@ impl Evaluator {
 
     /// Empties a node's outputs.
     fn release(&mut self, i: usize) {
-        for tree in &mut self.states[i].outputs {
-            *tree = Arc::new(DataTree::new());
+        for tree in &mut self.outputs[self.layout.outputs(i)] {
+            *tree = Arc::clone(&self.empty);
         }
         self.states[i].skipped.clear();
         self.states[i].late.clear();
@@ -472,11 +513,23 @@ impl Evaluator {
             self.held[i] = entries;
             self.held_total += entries;
         }
-        let wanted = &self.wanted[i];
+        let wanted = self.layout.wanted(i);
         let state = &mut self.states[i];
-        state.skipped = wanted.iter().map(|w| !w).collect();
-        state.late = wanted.iter().map(|_| std::sync::OnceLock::new()).collect();
-        state.outputs = out.outputs.into_iter().map(Arc::new).collect();
+        // Both stay empty (no allocation) when every output is wanted.
+        state.skipped.clear();
+        state.late.clear();
+        if wanted.iter().any(|w| !w) {
+            state.skipped.extend(wanted.iter().map(|w| !w));
+            state
+                .late
+                .extend(wanted.iter().map(|_| std::sync::OnceLock::new()));
+        }
+        for (slot, tree) in self.outputs[self.layout.outputs(i)]
+            .iter_mut()
+            .zip(out.outputs)
+        {
+            *slot = Arc::new(tree);
+        }
         state.messages = out.messages;
         state.dirty = false;
     }
@@ -502,7 +555,7 @@ impl Evaluator {
         };
         let config = crate::NodeConfig {
             settings: &node.settings,
-            inputs: &self.ports[i],
+            inputs: self.layout.ports(i),
         };
         let result = catch_unwind(AssertUnwindSafe(|| prepare(&config))).unwrap_or_else(|_| {
             Err(NodeError(
@@ -514,7 +567,7 @@ impl Evaluator {
 
     /// Runs one node on the current outputs of its sources.
     fn run(&self, i: usize, parallel: bool, budget: &Budget) -> NodeOutput {
-        self.run_wanting(i, parallel, budget, &self.wanted[i])
+        self.run_wanting(i, parallel, budget, self.layout.wanted(i))
     }
 
     /// Runs one node, computing the outputs marked in `wanted` (the others stay empty).
@@ -553,7 +606,8 @@ impl Evaluator {
         };
         // Collect every input: wires, graph inputs, values, defaults; then modifiers and casts.
         let mut messages = Vec::new();
-        let mut data: Vec<std::borrow::Cow<'_, DataTree>> = Vec::with_capacity(node.inputs.len());
+        let mut data: smallvec::SmallVec<[std::borrow::Cow<'_, DataTree>; 4]> =
+            smallvec::SmallVec::with_capacity(node.inputs.len());
         let mut missing = Vec::new();
         for (k, input) in node.inputs.iter().enumerate() {
             let raw = self.raw_input(i, k);
@@ -589,7 +643,7 @@ impl Evaluator {
         let run = NodeRun {
             node_id: &node.id,
             node_type: &node.node_type,
-            inputs: &self.ports[i],
+            inputs: self.layout.ports(i),
             settings: &node.settings,
             matching: node.matching,
             principal: node.principal_input(),
@@ -597,7 +651,7 @@ impl Evaluator {
             wanted,
             budget,
         };
-        let refs: Vec<&DataTree> = data.iter().map(|d| &**d).collect();
+        let refs: smallvec::SmallVec<[&DataTree; 4]> = data.iter().map(|d| &**d).collect();
         match catch_unwind(AssertUnwindSafe(|| run_node(&run, &refs, parallel))) {
             Ok(mut out) => {
                 messages.append(&mut out.messages);
@@ -627,22 +681,23 @@ impl Evaluator {
     fn raw_input(&self, i: usize, k: usize) -> Option<std::borrow::Cow<'_, DataTree>> {
         use std::borrow::Cow;
         let input = &self.plan.nodes[i].inputs[k];
-        if let Some(slot) = self
-            .plan
-            .inputs
-            .iter()
-            .position(|&(_, node, port)| node == i && port == k)
+        if let Some(slot) = self.layout.input_slot(i, k)
             && let Some(tree) = &self.overrides[slot]
         {
             return Some(Cow::Borrowed(tree));
         }
-        match input.sources.as_slice() {
+        let stored = |node: usize, output: usize| -> &DataTree {
+            self.layout
+                .output_index(node, output)
+                .map_or(&self.empty, |j| &self.outputs[j])
+        };
+        match self.layout.sources(i, k) {
             [] => input.value.as_ref().map(Cow::Borrowed),
-            [(node, output)] => Some(Cow::Borrowed(&*self.states[*node].outputs[*output])),
+            &[(node, output)] => Some(Cow::Borrowed(stored(node, output))),
             sources => {
                 let mut merged = DataTree::new();
                 for &(node, output) in sources {
-                    merged.merge(&self.states[node].outputs[output]);
+                    merged.merge(stored(node, output));
                 }
                 Some(Cow::Owned(merged))
             }
@@ -706,6 +761,9 @@ impl Evaluator {
 }
 
 mod late;
+mod layout;
+
+use layout::Layout;
 
 #[cfg(test)]
 mod tests;

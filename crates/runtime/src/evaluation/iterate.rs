@@ -82,11 +82,17 @@ pub(crate) struct NodeOutput {
 
 type RawMessage = (Level, Option<TreePath>, Option<usize>, String);
 
+/// Inline room for the inputs of most nodes: pairing branches allocates nothing for them.
+type PerInput<T> = smallvec::SmallVec<[T; 4]>;
+
+/// The branch pairings of a node: most nodes have one, held inline.
+type Iterations<'a> = smallvec::SmallVec<[BranchIteration<'a>; 1]>;
+
 /// One pairing of branches: the `j`-th branch iteration.
 struct BranchIteration<'a> {
     target: TreePath,
-    branches: Vec<Option<&'a Branch>>,
-    lengths: Vec<usize>,
+    branches: PerInput<Option<&'a Branch>>,
+    lengths: PerInput<usize>,
     count: usize,
     /// Under cross reference, the list inputs that step their branch inside the odometer,
     /// with all their branches (reference §2.2).

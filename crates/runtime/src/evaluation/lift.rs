@@ -27,7 +27,7 @@ type OneOutput = (Branch, Vec<(usize, String)>);
 
 /// The output branches of a lifted loop (one per output, empty for an output not wanted) and
 /// its messages as (index, level, text), in index order.
-pub(crate) type LiftOutput = (Vec<Branch>, Vec<(usize, Level, String)>);
+pub(crate) type LiftOutput = (smallvec::SmallVec<[Branch; 1]>, Vec<(usize, Level, String)>);
 
 /// The loop of a lifted function over one branch pairing: the input branches (each non-empty
 /// and of the declared type), the number of iterations, whether to use threads, and which
@@ -38,7 +38,7 @@ pub(crate) type LiftLoop =
 /// A one-output loop's result as a lifted loop's.
 fn one_output((branch, errors): OneOutput) -> LiftOutput {
     (
-        vec![branch],
+        smallvec::smallvec![branch],
         errors
             .into_iter()
             .map(|(k, text)| (k, Level::Error, text))

@@ -388,6 +388,19 @@ impl<'a> Solve<'a> {
         self.message(Level::Error, text.into());
     }
 
+    /// Reports a message for a given path and item index rather than this iteration's: for
+    /// nodes that solve once over whole trees and iterate themselves (a script node reports
+    /// each item's error on that item).
+    pub fn message_at(
+        &mut self,
+        level: Level,
+        path: Option<TreePath>,
+        index: Option<usize>,
+        text: impl Into<String>,
+    ) {
+        self.messages.push((level, path, index, text.into()));
+    }
+
     fn message(&mut self, level: Level, text: String) {
         self.messages
             .push((level, Some(self.path.clone()), self.index, text));

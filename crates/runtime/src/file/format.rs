@@ -33,6 +33,7 @@ const NODE_FIELDS: &[&str] = &[
     "id",
     "type",
     "inputs",
+    "outputs",
     "values",
     "settings",
     "modifiers",
@@ -83,6 +84,8 @@ pub(crate) struct NodeSpans {
     pub node_type: Range<usize>,
     /// The variable input names.
     pub input_names: Vec<Range<usize>>,
+    /// The variable output names.
+    pub output_names: Vec<Range<usize>>,
     /// Per value: the port name and the value.
     pub values: Vec<[Range<usize>; 2]>,
     /// Per setting: the name and the value.
@@ -453,6 +456,16 @@ impl Reader<'_> {
                     }
                     node.input_names = Some(names);
                 }
+                "outputs" => {
+                    let mut names = Vec::new();
+                    for name in self.list(v, &format!("`outputs` of {context}")) {
+                        if let Some(s) = self.string(name, "an output name") {
+                            names.push(s);
+                            spans.output_names.push(name.span.clone());
+                        }
+                    }
+                    node.output_names = Some(names);
+                }
                 "values" | "settings" => {
                     let what = if f.name == "values" {
                         "an input name"
@@ -686,6 +699,10 @@ fn node_node(node: &GraphNode) -> Node {
     if let Some(names) = &node.input_names {
         let names = names.iter().map(|n| string_node(n)).collect();
         fields.push(field("inputs", Node::new(Kind::List(names))));
+    }
+    if let Some(names) = &node.output_names {
+        let names = names.iter().map(|n| string_node(n)).collect();
+        fields.push(field("outputs", Node::new(Kind::List(names))));
     }
     if !node.values.is_empty() {
         fields.push(field("values", literal_map(&node.values)));

@@ -33,7 +33,7 @@ impl<'a> Checker<'a> {
                 }
             }
             let resolved = match self.registry.get(&node.node_type) {
-                Some(node_type) => Some(self.resolve_inputs(i, node_type)),
+                Some(node_type) => Some(self.resolve_ports(i, node_type)),
                 None => {
                     let suggestions = self
                         .registry
@@ -69,13 +69,66 @@ impl<'a> Checker<'a> {
         }
     }
 
-    fn resolve_inputs(&mut self, i: usize, node_type: &'a NodeType) -> Resolved<'a> {
+    /// The ports of node `i`: its inputs and outputs, with the names it gives variable ones.
+    fn resolve_ports(&mut self, i: usize, node_type: &'a NodeType) -> Resolved<'a> {
+        let inputs = self.resolve_inputs(i, node_type);
+        let outputs = self.resolve_outputs(i, node_type);
+        Resolved {
+            node_type,
+            inputs,
+            outputs,
+        }
+    }
+
+    fn resolve_outputs(&mut self, i: usize, node_type: &'a NodeType) -> Vec<Port> {
+        let node = &self.graph.nodes[i];
+        let Some(names) = &node.output_names else {
+            return node_type.resolve_outputs(None);
+        };
+        let spans = self.map().and_then(|m| m.nodes.get(i));
+        let name_at = |k: usize| spans.and_then(|s| s.output_names.get(k)).map(|r| r.start);
+        let Some(variable) = &node_type.variable_outputs else {
+            self.error(
+                DiagnosticKind::BadInputNames {
+                    node: node.id.0.clone(),
+                    message: format!(
+                        "node type \"{}\" has fixed outputs, so `outputs` cannot be given",
+                        node_type.id
+                    ),
+                },
+                name_at(0).or(self.node_offset(i)),
+            );
+            return node_type.resolve_outputs(None);
+        };
+        let mut kept: Vec<String> = Vec::with_capacity(names.len());
+        for (k, name) in names.iter().enumerate() {
+            let message = if name.trim().is_empty() {
+                Some("empty output name".to_owned())
+            } else if names[..k].contains(name) || variable.fixed.iter().any(|p| p.is_named(name))
+            {
+                Some(format!("duplicate output name \"{name}\""))
+            } else {
+                None
+            };
+            if let Some(message) = message {
+                self.error(
+                    DiagnosticKind::BadInputNames {
+                        node: node.id.0.clone(),
+                        message,
+                    },
+                    name_at(k),
+                );
+            } else {
+                kept.push(name.clone());
+            }
+        }
+        node_type.resolve_outputs(Some(&kept))
+    }
+
+    fn resolve_inputs(&mut self, i: usize, node_type: &'a NodeType) -> Vec<Port> {
         let node = &self.graph.nodes[i];
         let Some(names) = &node.input_names else {
-            return Resolved {
-                node_type,
-                inputs: node_type.resolve_inputs(None),
-            };
+            return node_type.resolve_inputs(None);
         };
         let spans = self.map().and_then(|m| m.nodes.get(i));
         let name_at = |k: usize| spans.and_then(|s| s.input_names.get(k)).map(|r| r.start);
@@ -90,10 +143,7 @@ impl<'a> Checker<'a> {
                 },
                 name_at(0).or(self.node_offset(i)),
             );
-            return Resolved {
-                node_type,
-                inputs: node_type.resolve_inputs(None),
-            };
+            return node_type.resolve_inputs(None);
         }
         let mut kept: Vec<String> = Vec::with_capacity(names.len());
         for (k, name) in names.iter().enumerate() {
@@ -117,10 +167,7 @@ impl<'a> Checker<'a> {
             }
         }
         // Bad names are left out so that they cause no further errors.
-        Resolved {
-            node_type,
-            inputs: node_type.resolve_inputs(Some(&kept)),
-        }
+        node_type.resolve_inputs(Some(&kept))
     }
 
     /// The input of resolved node `i` named `port`, reporting an unknown port at `at`.

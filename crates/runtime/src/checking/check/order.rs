@@ -51,10 +51,18 @@ impl<'a> Checker<'a> {
         for (i, (node, resolved)) in graph.nodes.iter().zip(self.resolved).enumerate() {
             // Checking passed, so every node type is known.
             let Some(r) = resolved else { continue };
-            let node_type = shared
-                .entry(r.node_type.id.as_str())
-                .or_insert_with(|| Arc::new(r.node_type.clone()))
-                .clone();
+            let node_type = if node.output_names.is_some() && r.node_type.variable_outputs.is_some()
+            {
+                // A node that names its outputs runs a type of its own with those outputs.
+                let mut own = r.node_type.clone();
+                own.outputs = r.outputs;
+                Arc::new(own)
+            } else {
+                shared
+                    .entry(r.node_type.id.as_str())
+                    .or_insert_with(|| Arc::new(r.node_type.clone()))
+                    .clone()
+            };
             let inputs = r
                 .inputs
                 .into_iter()

@@ -25,10 +25,10 @@ impl<'a> Checker<'a> {
         };
         let r = self.resolved[i].as_ref()?;
         let input = r.inputs.iter().position(|p| p.is_named(&port_ref.port));
-        let output = r.node_type.output_index(&port_ref.port);
+        let output = r.outputs.iter().position(|p| p.is_named(&port_ref.port));
         let (wanted, other, valid) = match direction {
             PortDirection::Input => (input, output, &r.inputs),
-            PortDirection::Output => (output, input, &r.node_type.outputs),
+            PortDirection::Output => (output, input, &r.outputs),
         };
         if let Some(k) = wanted {
             return Some((i, k));
@@ -86,7 +86,7 @@ impl<'a> Checker<'a> {
             let (Some(ra), Some(rb)) = (&self.resolved[a], &self.resolved[b]) else {
                 continue;
             };
-            let from_type = ra.node_type.outputs[out].data_type;
+            let from_type = ra.outputs[out].data_type;
             let to_type = rb.inputs[inp].data_type;
             if !can_cast(from_type, to_type) {
                 self.error(
@@ -259,7 +259,7 @@ impl<'a> Checker<'a> {
             let Some(r) = &self.resolved[i] else {
                 continue;
             };
-            let data_type = r.node_type.outputs[k].data_type;
+            let data_type = r.outputs[k].data_type;
             if let Err((message, at)) = self.parse_literal(literal, spans.map(|s| &s[1]), |n| {
                 ExpectedTree::from_node(n, data_type)
             }) {

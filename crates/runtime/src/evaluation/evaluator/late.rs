@@ -10,39 +10,12 @@
 
 use super::*;
 
-/// For each node of `plan`, which outputs a wire or a named output reads.
-pub(super) fn wanted_outputs(plan: &Plan) -> Vec<Vec<bool>> {
-    let mut wanted: Vec<Vec<bool>> = plan
-        .nodes
-        .iter()
-        .map(|n| vec![false; n.node_type.outputs.len()])
-        .collect();
-    let mut mark = |node: usize, output: usize| {
-        if let Some(w) = wanted.get_mut(node).and_then(|o| o.get_mut(output)) {
-            *w = true;
-        }
-    };
-    for node in &plan.nodes {
-        for input in &node.inputs {
-            for &(source, output) in &input.sources {
-                mark(source, output);
-            }
-        }
-    }
-    for &(_, node, output) in &plan.outputs {
-        mark(node, output);
-    }
-    wanted
-}
-
 impl Evaluator {
     /// Computes every output of every node from the next evaluation on, read or not (by
     /// default an output that no wire and no named output reads is computed only when it is
     /// first asked for, which runs its node again).
     pub fn keep_all_outputs(&mut self) {
-        for wanted in &mut self.wanted {
-            wanted.fill(true);
-        }
+        self.layout.wanted.fill(true);
     }
 
     /// Output `k` of node `i`: the stored tree, or, for an output the last run skipped, the
@@ -50,7 +23,11 @@ impl Evaluator {
     pub(super) fn tree(&self, i: usize, k: usize) -> &DataTree {
         let state = &self.states[i];
         if !state.skipped.get(k).copied().unwrap_or(false) {
-            return &state.outputs[k];
+            let j = self
+                .layout
+                .output_index(i, k)
+                .unwrap_or_else(|| panic!("node {i} has no output {k}"));
+            return &self.outputs[j];
         }
         state.late[k].get_or_init(|| {
             let budget = Budget {

@@ -273,3 +273,57 @@ fn graft_and_degrees_modifiers_apply_before_solving() {
     let v = numbers(out);
     assert!((v[0] - (11.0 + std::f64::consts::PI)).abs() < 1e-12);
 }
+
+#[test]
+fn the_flat_layout_matches_the_plan() {
+    let plan = plan();
+    let layout = layout::Layout::new(&plan);
+    for (i, node) in plan.nodes.iter().enumerate() {
+        let names: Vec<&str> = layout.ports(i).iter().map(|p| p.name.as_str()).collect();
+        let expected: Vec<&str> = node.inputs.iter().map(|p| p.port.name.as_str()).collect();
+        assert_eq!(names, expected, "ports of {}", node.id.0);
+        for (k, input) in node.inputs.iter().enumerate() {
+            assert_eq!(layout.sources(i, k), input.sources.as_slice());
+        }
+        assert_eq!(
+            layout.sources(i, node.inputs.len()),
+            &[] as &[(usize, usize)]
+        );
+        assert_eq!(layout.outputs(i).len(), node.node_type.outputs.len());
+    }
+    // Graph inputs "a" (node 0) and "c" (node 2); no other input is set from outside.
+    assert_eq!(layout.input_slot(0, 0), Some(0));
+    assert_eq!(layout.input_slot(2, 0), Some(1));
+    assert_eq!(layout.input_slot(1, 0), None);
+    assert_eq!(layout.input_slot(0, 1), None);
+    // Every output is wired or named except none: a, b, c feed the sums, sum2 is named.
+    let wanted: Vec<bool> = (0..5).flat_map(|i| layout.wanted(i).to_vec()).collect();
+    assert_eq!(wanted, [true; 5]);
+    assert_eq!(layout.output_index(4, 0), Some(4));
+    assert_eq!(layout.output_index(4, 1), None);
+}
+
+#[test]
+#[should_panic(expected = "has no output 1")]
+fn an_output_index_out_of_range_panics() {
+    let mut e = Evaluator::new(plan());
+    e.evaluate();
+    // Node 3 has one output: index 1 must not read node 4's.
+    e.node_output_at(3, 1);
+}
+
+#[test]
+fn waves_run_in_depth_order_and_reruns_reuse_the_schedule() {
+    let mut e = Evaluator::new(plan());
+    e.evaluate();
+    let ids = |e: &Evaluator| -> Vec<String> { e.last_run().iter().map(|n| n.0.clone()).collect() };
+    assert_eq!(ids(&e), ["a", "b", "c", "sum1", "sum2"]);
+    e.set_input("c", DataTree::from_item(1.0)).unwrap();
+    e.evaluate();
+    assert_eq!(ids(&e), ["c", "sum2"]);
+    assert_eq!(numbers(e.output("sum").unwrap()), [12.0, 13.0]);
+    e.expire_all();
+    e.evaluate();
+    assert_eq!(ids(&e), ["a", "b", "c", "sum1", "sum2"]);
+    assert_eq!(numbers(e.output("sum").unwrap()), [12.0, 13.0]);
+}

@@ -69,14 +69,14 @@ fn run_lift(
     let wanted = run.wanted;
     let total: usize = iterations.iter().map(|bi| bi.count).sum();
     let parallel = parallel && total >= PARALLEL_THRESHOLD;
-    let empty = || -> (Vec<Branch>, Vec<(usize, Level, String)>) {
+    let empty = || -> crate::evaluation::lift::LiftOutput {
         (
             lift.outputs.iter().map(|&t| Branch::new(t)).collect(),
             Vec::new(),
         )
     };
     let one = |bi: &BranchIteration<'_>| {
-        let branches: Option<Vec<&Branch>> = bi
+        let branches: Option<PerInput<&Branch>> = bi
             .branches
             .iter()
             .map(|b| b.filter(|b| !b.is_empty()))
@@ -95,7 +95,9 @@ fn run_lift(
     };
     // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
     // over threads only when items are slow enough for that to pay (as within one branch).
-    let results: Vec<crate::evaluation::lift::LiftOutput> = if parallel && iterations.len() > 1 {
+    let results: smallvec::SmallVec<[crate::evaluation::lift::LiftOutput; 1]> = if parallel
+        && iterations.len() > 1
+    {
         let started = std::time::Instant::now();
         let first = one(&iterations[0]);
         let spread =
@@ -108,7 +110,7 @@ fn run_lift(
         } else {
             results.extend(rest.iter().map(one));
         }
-        results
+        results.into()
     } else {
         iterations.iter().map(one).collect()
     };
@@ -121,7 +123,7 @@ fn run_lift(
         return None;
     }
     let mut messages = Vec::new();
-    let mut pieces: Vec<Vec<(TreePath, Branch)>> = outputs
+    let mut pieces: PerInput<Vec<(TreePath, Branch)>> = outputs
         .iter()
         .map(|_| Vec::with_capacity(iterations.len()))
         .collect();

@@ -37,7 +37,7 @@ fn principal_input(run: &NodeRun<'_>, data: &[&DataTree]) -> Option<usize> {
 pub(super) fn branch_iterations<'a>(
     run: &NodeRun<'_>,
     data: &[&'a DataTree],
-) -> Result<Vec<BranchIteration<'a>>, String> {
+) -> Result<Iterations<'a>, String> {
     let ports = run.inputs;
     let max_items = run.budget.max_items;
     let has_item = ports.iter().any(|p| p.access == Access::Item);
@@ -72,7 +72,7 @@ pub(super) fn branch_iterations<'a>(
         .iter()
         .try_fold(1usize, |n, (_, b)| n.checked_mul(b.len()));
     let mut total = n_branches;
-    let mut out = Vec::with_capacity(n_branches);
+    let mut out = Iterations::with_capacity(n_branches);
     for j in 0..n_branches {
         let target = match principal.map(|p| data[p].branches()) {
             Some(branches) if !branches.is_empty() => {
@@ -85,7 +85,7 @@ pub(super) fn branch_iterations<'a>(
             }
             _ => TreePath::new(vec![j as u32]),
         };
-        let branches: Vec<Option<&Branch>> = data
+        let branches: PerInput<Option<&Branch>> = data
             .iter()
             .zip(ports)
             .map(|(t, p)| {
@@ -96,14 +96,32 @@ pub(super) fn branch_iterations<'a>(
                 }
             })
             .collect();
-        let lengths: Vec<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
+        let lengths: PerInput<usize> = branches.iter().map(|b| b.map_or(0, Branch::len)).collect();
         let mut item_lengths = ports
             .iter()
             .zip(&lengths)
             .filter(|(p, _)| p.access == Access::Item)
             .map(|(_, &l)| l);
+        // Item inputs that are all optional and empty here do not stop a node whose other
+        // inputs have data from solving once (Delaunay Mesh's points without a Plane), as
+        // Grasshopper counts a list input as one item.
+        let items_absent = has_item
+            && ports
+                .iter()
+                .zip(&lengths)
+                .filter(|(p, _)| p.access == Access::Item)
+                .all(|(p, &l)| p.optional && l == 0)
+            && ports
+                .iter()
+                .zip(data)
+                .any(|(p, t)| p.access != Access::Item && t.branch_count() > 0);
         let count = if !has_item {
             Some(1)
+        } else if items_absent {
+            match run.matching {
+                Matching::Cross => step_product,
+                Matching::Longest | Matching::Shortest => Some(1),
+            }
         } else {
             match run.matching {
                 Matching::Longest => Some(item_lengths.max().unwrap_or(0)),

@@ -395,3 +395,48 @@ fn cross_reference_with_two_list_inputs_crosses_their_branches() {
     let out = run(&item_plus_sums(2, true), Matching::Cross, None, &inputs);
     assert_eq!(out, "{0}:[11,null]");
 }
+
+/// A list input with data and one optional item input without: the node solves once per
+/// branch (the sum of the list, plus the item when present), as a list-only node would.
+fn sum_plus_optional() -> NodeType {
+    NodeType::new("test.sum_plus", "Sum Plus", "S+", "Maths")
+        .input(Port::new("V", "V", DataType::Number).list())
+        .input(Port::new("K", "K", DataType::Number).optional())
+        .output(Port::new("Result", "R", DataType::Number))
+        .solve(|s| {
+            let sum: f64 = s.list::<f64>(0)?.present().sum();
+            let k = s.item_opt::<f64>(1).copied().unwrap_or(0.0);
+            s.set(0, sum + k);
+            Ok(())
+        })
+}
+
+#[test]
+fn empty_optional_item_inputs_do_not_stop_a_list_node() {
+    let node = sum_plus_optional();
+    for matching in [Matching::Longest, Matching::Shortest] {
+        assert_eq!(
+            run(&node, matching, None, &["{0;0}:[1,2,3] {0;1}:[4,5]", ""]),
+            "{0;0}:[6] {0;1}:[9]",
+            "{matching:?}"
+        );
+    }
+    // Under cross reference a list input's branches are a wheel of the odometer (§2.2), so
+    // both sums land in one branch, as they do when K has data.
+    assert_eq!(
+        run(&node, Matching::Cross, None, &["{0;0}:[1,2,3] {0;1}:[4,5]", ""]),
+        "{0;0}:[6,9]"
+    );
+    // With the item present, it iterates as before.
+    assert_eq!(
+        run(
+            &node,
+            Matching::Longest,
+            None,
+            &["{0}:[1,2,3]", "{0}:[10,20]"]
+        ),
+        "{0}:[16,26]"
+    );
+    // Nothing at all: nothing to solve, an empty branch as before.
+    assert_eq!(run(&node, Matching::Longest, None, &["", ""]), "{0}:[]");
+}

@@ -1,0 +1,209 @@
+//! A piece of a surface in Bézier form that can be cut further: the homogeneous control points
+//! `(w·P, w)` of one knot-span rectangle's polynomial patch, or of a part of it, with its
+//! parameter rectangle.
+//!
+//! As for curve pieces (`piece.rs`), the patch lies in the convex hull of its projected control
+//! points, and any function that is linear in the homogeneous point, such as `w` times the
+//! signed distance from a plane, has the patch's control values as its Bernstein coefficients.
+
+use crate::curve::bezier_piece::blossoms;
+use crate::curve::nurbs::basis::MAX_ORDER;
+use crate::intersect::piece::Aabb;
+use crate::{NurbsSurface, Plane, Point3};
+
+/// A polynomial patch on `[u0, u1] × [v0, v1]`, in Bézier form.
+#[derive(Clone, Debug)]
+pub(crate) struct Patch {
+    /// The parameter rectangle, `[u0, u1]`.
+    pub(crate) u: [f64; 2],
+    /// The parameter rectangle, `[v0, v1]`.
+    pub(crate) v: [f64; 2],
+    /// Control points in `u` (degree in `u` + 1).
+    pub(crate) nu: usize,
+    /// Control points in `v` (degree in `v` + 1).
+    pub(crate) nv: usize,
+    /// Homogeneous control points, `i · nv + j`.
+    h: Vec<[f64; 4]>,
+}
+
+/// The Rhino-form knot indices of the non-empty spans of one direction.
+pub(crate) fn span_indices(knots: &[f64], degree: usize, count: usize) -> Vec<usize> {
+    (degree - 1..count - 1)
+        .filter(|&i| knots[i] < knots[i + 1])
+        .collect()
+}
+
+impl Patch {
+    /// The patch of spans `su` × `sv` (Rhino-form knot indices of non-empty spans).
+    pub(crate) fn of_spans(surface: &NurbsSurface, su: usize, sv: usize) -> Self {
+        let (p, q) = (surface.degree_u(), surface.degree_v());
+        let (first_u, first_v) = (su + 1 - p, sv + 1 - q);
+        let knots_u = &surface.knots_u()[first_u..first_u + 2 * p];
+        let knots_v = &surface.knots_v()[first_v..first_v + 2 * q];
+        let range_u = [surface.knots_u()[su], surface.knots_u()[su + 1]];
+        let range_v = [surface.knots_v()[sv], surface.knots_v()[sv + 1]];
+        let count_v = surface.count_v();
+        let mut rows = vec![[[0.0; 4]; MAX_ORDER]; p + 1];
+        for (i, row) in rows.iter_mut().enumerate() {
+            let mut homogeneous = [[0.0; 4]; MAX_ORDER];
+            for (j, h) in homogeneous[..=q].iter_mut().enumerate() {
+                let k = (first_u + i) * count_v + first_v + j;
+                let (pt, w) = (surface.points()[k], surface.weights()[k]);
+                *h = [pt.x * w, pt.y * w, pt.z * w, w];
+            }
+            blossoms::<MAX_ORDER>(q, knots_v, range_v, &homogeneous[..=q], &mut row[..=q]);
+        }
+        let mut h = vec![[0.0; 4]; (p + 1) * (q + 1)];
+        for j in 0..=q {
+            let column: [[f64; 4]; MAX_ORDER] =
+                std::array::from_fn(|i| if i <= p { rows[i][j] } else { [0.0; 4] });
+            let mut bezier = [[0.0; 4]; MAX_ORDER];
+            blossoms::<MAX_ORDER>(p, knots_u, range_u, &column[..=p], &mut bezier[..=p]);
+            for i in 0..=p {
+                h[i * (q + 1) + j] = bezier[i];
+            }
+        }
+        Self {
+            u: range_u,
+            v: range_v,
+            nu: p + 1,
+            nv: q + 1,
+            h,
+        }
+    }
+
+    /// Every patch of the surface, by span rows.
+    pub(crate) fn all(surface: &NurbsSurface) -> Vec<Self> {
+        let su = span_indices(surface.knots_u(), surface.degree_u(), surface.count_u());
+        let sv = span_indices(surface.knots_v(), surface.degree_v(), surface.count_v());
+        let mut out = Vec::with_capacity(su.len() * sv.len());
+        for &i in &su {
+            for &j in &sv {
+                out.push(Self::of_spans(surface, i, j));
+            }
+        }
+        out
+    }
+
+    /// The homogeneous control point `(i, j)`.
+    #[inline]
+    pub(crate) fn homogeneous(&self, i: usize, j: usize) -> [f64; 4] {
+        self.h[i * self.nv + j]
+    }
+
+    /// The Euclidean control point `(i, j)`.
+    #[inline]
+    pub(crate) fn point(&self, i: usize, j: usize) -> Point3 {
+        let q = self.homogeneous(i, j);
+        Point3::new(q[0] / q[3], q[1] / q[3], q[2] / q[3])
+    }
+
+    /// The box of the Euclidean control points, which holds the patch.
+    pub(crate) fn aabb(&self) -> Aabb {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for q in &self.h {
+            for c in 0..3 {
+                let x = q[c] / q[3];
+                lo[c] = lo[c].min(x);
+                hi[c] = hi[c].max(x);
+            }
+        }
+        [lo, hi]
+    }
+
+    /// The signed distances of the control points from `plane` and their weights, as the
+    /// Bernstein coefficients `w·d` of the numerator of the patch's distance and `w` of its
+    /// denominator, `i · nv + j`.
+    pub(crate) fn plane_values(&self, plane: &Plane) -> (Vec<f64>, Vec<f64>) {
+        let o = plane.origin;
+        let n = plane.z_axis;
+        let numerator = self
+            .h
+            .iter()
+            .map(|q| {
+                (q[0] - q[3] * o.x) * n.x + (q[1] - q[3] * o.y) * n.y + (q[2] - q[3] * o.z) * n.z
+            })
+            .collect();
+        let weights = self.h.iter().map(|q| q[3]).collect();
+        (numerator, weights)
+    }
+
+    /// The two halves across `u` (`in_u`) or `v`, by de Casteljau's algorithm at the middle.
+    pub(crate) fn halve(&self, in_u: bool) -> (Self, Self) {
+        let (nu, nv) = (self.nu, self.nv);
+        let mut left = self.clone();
+        let mut right = self.clone();
+        let (count, lines) = if in_u { (nu, nv) } else { (nv, nu) };
+        let index = |line: usize, k: usize| {
+            if in_u { k * nv + line } else { line * nv + k }
+        };
+        for line in 0..lines {
+            let mut q = [[0.0; 4]; MAX_ORDER];
+            for (k, x) in q[..count].iter_mut().enumerate() {
+                *x = self.h[index(line, k)];
+            }
+            left.h[index(line, 0)] = q[0];
+            right.h[index(line, count - 1)] = q[count - 1];
+            for level in 1..count {
+                for i in 0..count - level {
+                    let next = q[i + 1];
+                    for (x, y) in q[i].iter_mut().zip(next) {
+                        *x = 0.5 * (*x + y);
+                    }
+                }
+                left.h[index(line, level)] = q[0];
+                right.h[index(line, count - 1 - level)] = q[count - 1 - level];
+            }
+        }
+        if in_u {
+            let m = 0.5 * (self.u[0] + self.u[1]);
+            left.u[1] = m;
+            right.u[0] = m;
+        } else {
+            let m = 0.5 * (self.v[0] + self.v[1]);
+            left.v[1] = m;
+            right.v[0] = m;
+        }
+        (left, right)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Sphere;
+
+    #[test]
+    fn patches_bound_and_halve_like_the_surface() {
+        let s = Sphere::new(Point3::new(1.0, 2.0, 3.0), 2.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let patches = Patch::all(&s);
+        assert_eq!(patches.len(), 8);
+        for patch in &patches {
+            // The corners of the patch are points of the surface.
+            let corners = [
+                (patch.u[0], patch.v[0], patch.point(0, 0)),
+                (
+                    patch.u[1],
+                    patch.v[1],
+                    patch.point(patch.nu - 1, patch.nv - 1),
+                ),
+            ];
+            for (u, v, p) in corners {
+                assert!(s.point_at(u, v).distance(p) < 1e-12);
+            }
+            let (l, r) = patch.halve(true);
+            let (b, _) = r.halve(false);
+            assert!(s.point_at(l.u[1], l.v[0]).distance(l.point(l.nu - 1, 0)) < 1e-12);
+            assert!(s.point_at(b.u[0], b.v[1]).distance(b.point(0, b.nv - 1)) < 1e-12);
+            let bbox = b.aabb();
+            let p = s.point_at(0.5 * (b.u[0] + b.u[1]), 0.5 * (b.v[0] + b.v[1]));
+            for (c, x) in p.to_array().into_iter().enumerate() {
+                assert!(x >= bbox[0][c] - 1e-12 && x <= bbox[1][c] + 1e-12);
+            }
+        }
+    }
+}

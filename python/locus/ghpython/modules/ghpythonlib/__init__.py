@@ -1,0 +1,2 @@
+"""``ghpythonlib`` for GhPython scripts run by locus: ``treehelpers`` (nested lists to trees
+and back)."""
