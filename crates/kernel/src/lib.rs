@@ -51,13 +51,13 @@ pub use crate::curve::bezier::Bezier;
 pub use crate::curve::circle::Circle;
 pub use crate::curve::closest_point::CurveClosestPoint;
 pub use crate::curve::containment::Containment;
-pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
-pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
-pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::continuity::{
     Continuity, ContinuityTolerances, DERIVATIVE_TOLERANCE, ParametricContinuity, continuity,
     continuity_with_tolerances,
 };
+pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
+pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
+pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::hermite::CubicHermite;
 pub use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
 pub use crate::curve::line::Line;

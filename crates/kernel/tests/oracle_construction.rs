@@ -487,7 +487,14 @@ fn pipe_cases() {
             "area": e["lateral_area"],
             "lateral_area_centroid": e["lateral_area_centroid"],
         });
-        check_area(&mut f, &id, &open, &lateral, FITTED, "lateral_area_centroid");
+        check_area(
+            &mut f,
+            &id,
+            &open,
+            &lateral,
+            FITTED,
+            "lateral_area_centroid",
+        );
         f.check(capped.is_solid(), || format!("{id}: not a closed solid"));
         check_area(&mut f, &id, &capped, e, FITTED, "no centroid");
         check_volume(&mut f, &id, &capped, e, FITTED);
@@ -576,7 +583,13 @@ fn edge_surface_cases() {
         }
         for item in e["boundary_points_on_result"].as_array().unwrap() {
             for p in item["points"].as_array().unwrap() {
-                check_on(&mut f, &id, std::slice::from_ref(&surface), point(p), ON_RESULT);
+                check_on(
+                    &mut f,
+                    &id,
+                    std::slice::from_ref(&surface),
+                    point(p),
+                    ON_RESULT,
+                );
             }
         }
     }

@@ -2,7 +2,8 @@
 //! category holds no node that is not listed here.
 
 use locus_nodes::curve::{
-    analysis, division, edit, extend, frames, primitive, primitive_more, primitive_rect, regions, spline, util,
+    analysis, division, edit, extend, frames, primitive, primitive_more, primitive_rect, regions,
+    spline, util,
 };
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;

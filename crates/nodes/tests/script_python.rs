@@ -23,7 +23,10 @@ fn text(s: &str) -> Value {
 }
 
 fn errors(r: &NodeCallResult) -> Vec<&Message> {
-    r.messages.iter().filter(|m| m.level == Level::Error).collect()
+    r.messages
+        .iter()
+        .filter(|m| m.level == Level::Error)
+        .collect()
 }
 
 /// The interpreter with the locus package, or `None` (the test then passes after saying why,
@@ -36,7 +39,9 @@ fn interpreter() -> Option<PythonConfig> {
                 std::env::var("LOCUS_REQUIRE_PYTHON").as_deref() != Ok("1"),
                 "LOCUS_REQUIRE_PYTHON=1 but {PYTHON_ENV} is not set"
             );
-            eprintln!("skipped: set {PYTHON_ENV} to a Python with the locus package to run this test");
+            eprintln!(
+                "skipped: set {PYTHON_ENV} to a Python with the locus package to run this test"
+            );
             None
         }
     }
@@ -48,7 +53,9 @@ fn numbers(xs: &[f64]) -> DataTree {
 
 #[test]
 fn without_python_the_node_says_python_is_not_available() {
-    let node = python(PythonConfig::Interpreter("/nonexistent/locus-test-python".into()));
+    let node = python(PythonConfig::Interpreter(
+        "/nonexistent/locus-test-python".into(),
+    ));
     let r = NodeCall::new(&node)
         .input(numbers(&[1.0, 2.0]))
         .setting("code", text("a = x * 2"))
@@ -56,7 +63,9 @@ fn without_python_the_node_says_python_is_not_available() {
     let errs = errors(&r);
     assert_eq!(errs.len(), 1, "{:?}", r.messages);
     assert!(
-        errs[0].text.starts_with("Python is not available: cannot start /nonexistent/locus-test-python"),
+        errs[0]
+            .text
+            .starts_with("Python is not available: cannot start /nonexistent/locus-test-python"),
         "{}",
         errs[0].text
     );
@@ -75,7 +84,9 @@ fn a_python_without_the_locus_package_is_not_available_either() {
     let errs = errors(&r);
     assert_eq!(errs.len(), 1, "{:?}", r.messages);
     assert!(
-        errs[0].text.starts_with("Python is not available: false (locus._script_worker) ended"),
+        errs[0]
+            .text
+            .starts_with("Python is not available: false (locus._script_worker) ended"),
         "{}",
         errs[0].text
     );
@@ -83,7 +94,9 @@ fn a_python_without_the_locus_package_is_not_available_either() {
 
 #[test]
 fn disabled_scripts_say_why_and_empty_scripts_do_nothing() {
-    let node = python(PythonConfig::Disabled("this server does not run scripts".into()));
+    let node = python(PythonConfig::Disabled(
+        "this server does not run scripts".into(),
+    ));
     let r = NodeCall::new(&node)
         .input(numbers(&[1.0]))
         .setting("code", text("a = x"))
@@ -108,7 +121,11 @@ fn bad_settings_are_check_errors_with_the_position() {
     ],
 )"#;
     let ds = Document::parse(text).unwrap().check(&registry).unwrap_err();
-    let msg = ds.iter().map(|d| d.to_string()).collect::<Vec<_>>().join("\n");
+    let msg = ds
+        .iter()
+        .map(|d| d.to_string())
+        .collect::<Vec<_>>()
+        .join("\n");
     assert!(msg.contains("access must be item, list or tree"), "{msg}");
     assert!(msg.contains("4:"), "{msg}");
 }
@@ -119,7 +136,10 @@ fn items_lists_and_trees_go_in_and_come_out() {
     let node = python(config);
     // x item access (three iterations), ys list access (the whole branch each time), t tree.
     let mut t = DataTree::new();
-    t.insert(TreePath::new(vec![0, 1]), Branch::from_items(vec![10i64, 20]));
+    t.insert(
+        TreePath::new(vec![0, 1]),
+        Branch::from_items(vec![10i64, 20]),
+    );
     let r = NodeCall::new(&node)
         .input_names(&["x", "ys", "t"])
         .input(numbers(&[1.0, 2.0, 3.0]))
@@ -164,7 +184,11 @@ fn items_lists_and_trees_go_in_and_come_out() {
         .collect();
     assert_eq!(
         remarks,
-        [("x is 1.0", Some(0)), ("x is 2.0", Some(1)), ("x is 3.0", Some(2))]
+        [
+            ("x is 1.0", Some(0)),
+            ("x is 2.0", Some(1)),
+            ("x is 3.0", Some(2))
+        ]
     );
 }
 
@@ -207,12 +231,18 @@ fn an_exception_is_an_error_on_its_item_with_the_script_line() {
         .run();
     let errs = errors(&r);
     assert_eq!(errs.len(), 1, "{:?}", r.messages);
-    assert_eq!(errs[0].text, "line 3: ZeroDivisionError: float division by zero");
+    assert_eq!(
+        errs[0].text,
+        "line 3: ZeroDivisionError: float division by zero"
+    );
     assert_eq!(errs[0].index, Some(1));
     assert_eq!(errs[0].path, Some(TreePath::zero()));
     // The other items ran; the failed one is a null.
     let a: Vec<Option<Value>> = r.outputs[1].values().collect();
-    assert_eq!(a, [Some(Value::Number(2.0)), None, Some(Value::Number(0.5))]);
+    assert_eq!(
+        a,
+        [Some(Value::Number(2.0)), None, Some(Value::Number(0.5))]
+    );
     // A syntax error names its line too, on every item.
     let r = NodeCall::new(&node)
         .input(numbers(&[1.0]))
@@ -239,7 +269,9 @@ fn a_script_past_its_time_limit_is_stopped_and_the_next_evaluation_runs() {
     let errs = errors(&r);
     assert_eq!(errs.len(), 1, "{:?}", r.messages);
     assert!(
-        errs[0].text.contains("ran longer than its time limit of 0.5 s"),
+        errs[0]
+            .text
+            .contains("ran longer than its time limit of 0.5 s"),
         "{}",
         errs[0].text
     );
@@ -261,7 +293,9 @@ fn a_script_past_its_time_limit_is_stopped_and_the_next_evaluation_runs() {
     let errs = errors(&r);
     assert_eq!(errs.len(), 2, "{:?}", r.messages);
     assert!(
-        errs[0].text.contains("did not finish within its time limit of 0.5 s"),
+        errs[0]
+            .text
+            .contains("did not finish within its time limit of 0.5 s"),
         "{}",
         errs[0].text
     );
@@ -281,7 +315,10 @@ fn a_script_that_ends_or_crashes_its_python_is_an_error_not_a_crash() {
     let Some(config) = interpreter() else { return };
     let node = python(config);
     for (code, expected) in [
-        ("import os\nif x == 2:\n    os._exit(3)\na = x", "ended with exit code 3"),
+        (
+            "import os\nif x == 2:\n    os._exit(3)\na = x",
+            "ended with exit code 3",
+        ),
         (
             // A segmentation fault inside a C extension (ctypes reading address 0).
             "import ctypes\nif x == 2:\n    ctypes.string_at(0)\na = x",
@@ -295,7 +332,11 @@ fn a_script_that_ends_or_crashes_its_python_is_an_error_not_a_crash() {
         let errs = errors(&r);
         assert_eq!(errs.len(), 2, "{:?}", r.messages);
         assert!(errs[0].text.contains(expected), "{}", errs[0].text);
-        assert!(errs[0].text.contains("while the script ran"), "{}", errs[0].text);
+        assert!(
+            errs[0].text.contains("while the script ran"),
+            "{}",
+            errs[0].text
+        );
         assert_eq!(errs[0].index, Some(1));
         assert!(errs[1].text.starts_with("not run"), "{}", errs[1].text);
         assert_eq!(r.outputs[1].values().next(), Some(Some(Value::Number(1.0))));
@@ -305,7 +346,10 @@ fn a_script_that_ends_or_crashes_its_python_is_an_error_not_a_crash() {
         .input(numbers(&[2.0]))
         .setting("code", text("a = x * 10"))
         .run();
-    assert_eq!(r.outputs[1].values().next(), Some(Some(Value::Number(20.0))));
+    assert_eq!(
+        r.outputs[1].values().next(),
+        Some(Some(Value::Number(20.0)))
+    );
 }
 
 #[test]
@@ -330,8 +374,15 @@ fn a_graph_of_script_nodes_runs_through_the_registry() {
     let checked = Document::parse(text).unwrap().check(&registry).unwrap();
     let mut evaluator = Evaluator::new(checked.plan);
     evaluator.evaluate();
-    assert!(evaluator.messages().next().is_none(), "{:?}", evaluator.messages().collect::<Vec<_>>());
+    assert!(
+        evaluator.messages().next().is_none(),
+        "{:?}",
+        evaluator.messages().collect::<Vec<_>>()
+    );
     let total = evaluator.output("total").unwrap();
-    assert_eq!(total.values().collect::<Vec<_>>(), [Some(Value::Number(14.0))]);
+    assert_eq!(
+        total.values().collect::<Vec<_>>(),
+        [Some(Value::Number(14.0))]
+    );
     assert_eq!(total.data_type(), DataType::Number);
 }

@@ -63,12 +63,12 @@ impl Brep {
             let last = &swept.surfaces[swept.surfaces.len() - 1];
             let start = first.isocurve(SurfaceDirection::U, first.domain_v().t0)?;
             let end = last.isocurve(SurfaceDirection::U, last.domain_v().t1)?;
-            let start_dir = -rail.tangent_at(d.t0).ok_or(Error::Degenerate {
-                what: "pipe rail",
-            })?;
-            let end_dir = rail.tangent_from_left(d.t1)?.ok_or(Error::Degenerate {
-                what: "pipe rail",
-            })?;
+            let start_dir = -rail
+                .tangent_at(d.t0)
+                .ok_or(Error::Degenerate { what: "pipe rail" })?;
+            let end_dir = rail
+                .tangent_from_left(d.t1)?
+                .ok_or(Error::Degenerate { what: "pipe rail" })?;
             for (rim, centre, outward) in [
                 (start, rail.point_at(d.t0), start_dir),
                 (end, rail.point_at(d.t1), end_dir),
@@ -105,7 +105,12 @@ fn hemisphere(
         z_axis: x.cross(outward),
     };
     let meridian = Arc::new(Circle::new(plane, radius)?, Interval::new(0.0, FRAC_PI_2))?;
-    NurbsSurface::revolution(&meridian.to_nurbs(), centre, outward, Interval::new(0.0, TAU))
+    NurbsSurface::revolution(
+        &meridian.to_nurbs(),
+        centre,
+        outward,
+        Interval::new(0.0, TAU),
+    )
 }
 
 #[cfg(test)]
@@ -147,7 +152,10 @@ mod tests {
         let area = b[0].area().unwrap();
         assert!((area - 4.0 * PI * PI * 3.0 * r).abs() < 1e-9, "{area}");
         let volume = b[0].volume().unwrap();
-        assert!((volume - 2.0 * PI * PI * 3.0 * r * r).abs() < 1e-9, "{volume}");
+        assert!(
+            (volume - 2.0 * PI * PI * 3.0 * r * r).abs() < 1e-9,
+            "{volume}"
+        );
     }
 
     #[test]
@@ -197,7 +205,10 @@ mod tests {
             "{area}"
         );
         let volume = b[0].volume().unwrap();
-        assert!((volume - PI * r * r * length).abs() < 1e-7 * volume, "{volume}");
+        assert!(
+            (volume - PI * r * r * length).abs() < 1e-7 * volume,
+            "{volume}"
+        );
     }
 
     #[test]

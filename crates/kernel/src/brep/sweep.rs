@@ -45,10 +45,16 @@ pub(crate) struct SweptFaces {
 }
 
 /// The end treatment at a kink with incoming tangent `zin` and outgoing `zout` at `point`.
-fn kink_end(miter: SweepMiter, point: Point3, zin: Vector3, zout: Vector3, t: f64) -> Result<SweepEnd> {
-    let normal = (zin + zout).try_normalize().ok_or_else(|| {
-        Error::InvalidInput(format!("the rail turns back on itself at {t}"))
-    })?;
+fn kink_end(
+    miter: SweepMiter,
+    point: Point3,
+    zin: Vector3,
+    zout: Vector3,
+    t: f64,
+) -> Result<SweepEnd> {
+    let normal = (zin + zout)
+        .try_normalize()
+        .ok_or_else(|| Error::InvalidInput(format!("the rail turns back on itself at {t}")))?;
     Ok(match miter {
         SweepMiter::None => SweepEnd::Square,
         SweepMiter::Trim => SweepEnd::Projected { point, normal },
@@ -140,9 +146,14 @@ pub(crate) fn sweep_faces(
         ) {
             let profile = shape.profile_at(&sweep, w[0])?;
             let axis = arc.circle.normal();
-            NurbsSurface::revolution(&profile, arc.center(), axis, Interval::new(0.0, arc.sweep()))?
-                .transposed()
-                .reparameterized(profile.domain(), interval)?
+            NurbsSurface::revolution(
+                &profile,
+                arc.center(),
+                axis,
+                Interval::new(0.0, arc.sweep()),
+            )?
+            .transposed()
+            .reparameterized(profile.domain(), interval)?
         } else {
             let closes = closed && !seam_kink && pieces == 1;
             sweep_piece(&sweep, &shape, interval, [start, end], closes, tolerance)?
@@ -226,7 +237,9 @@ impl Brep {
         let mut placed = Vec::with_capacity(profiles.len());
         for (k, p) in profiles.iter().enumerate() {
             if !p.is_valid() {
-                return Err(Error::InvalidInput(format!("profile {k} is not a valid curve")));
+                return Err(Error::InvalidInput(format!(
+                    "profile {k} is not a valid curve"
+                )));
             }
             let nurbs = p.to_nurbs();
             let t = rail.closest_point(centre(&nurbs))?.t;
@@ -304,8 +317,8 @@ mod tests {
     #[test]
     fn a_profile_along_an_arc_is_a_surface_of_revolution() {
         let arc_plane = Plane::WORLD_XY;
-        let arc = crate::Arc::new(Circle::new(arc_plane, 3.0).unwrap(), Interval::new(0.0, PI))
-            .unwrap();
+        let arc =
+            crate::Arc::new(Circle::new(arc_plane, 3.0).unwrap(), Interval::new(0.0, PI)).unwrap();
         let rail = Curve::from(arc);
         // A unit square profile at the arc's start, in the plane through the axis.
         let profile = square_profile(
@@ -329,7 +342,15 @@ mod tests {
         let rail = Curve::from(Line::new(Point3::ORIGIN, Point3::new(0.0, 0.0, 3.0)));
         assert!(Brep::sweep(&rail, &[], SweepMiter::Trim, 1e-9).is_err());
         let profile = square_profile(0.5, Plane::WORLD_XY);
-        assert!(Brep::sweep(&rail, &[profile.clone(), profile.clone()], SweepMiter::Trim, 1e-9).is_err());
+        assert!(
+            Brep::sweep(
+                &rail,
+                &[profile.clone(), profile.clone()],
+                SweepMiter::Trim,
+                1e-9
+            )
+            .is_err()
+        );
         assert!(Brep::sweep(&rail, &[profile], SweepMiter::Trim, 0.0).is_err());
     }
 }

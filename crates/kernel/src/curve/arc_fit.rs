@@ -97,8 +97,8 @@ mod tests {
 
     #[test]
     fn nurbs_arcs_and_circles_are_recognized() {
-        let plane = Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, -1.0, 2.0))
-            .unwrap();
+        let plane =
+            Plane::from_normal(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, -1.0, 2.0)).unwrap();
         let circle = Circle::new(plane, 2.5).unwrap();
         let arc = Arc::new(circle, Interval::new(0.3, 0.3 + 2.0)).unwrap();
         let found = Curve::from(arc.to_nurbs()).try_arc(1e-12).unwrap();

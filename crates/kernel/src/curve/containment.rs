@@ -79,15 +79,21 @@ impl Curve {
             Curve::Nurbs(c) => c.span_breaks(),
             Curve::Polyline { polyline, .. } => {
                 let n = polyline.segment_count();
-                (0..=n).map(|i| d.parameter_at(i as f64 / n as f64)).collect()
+                (0..=n)
+                    .map(|i| d.parameter_at(i as f64 / n as f64))
+                    .collect()
             }
-            _ => (0..=4).map(|i| d.parameter_at(f64::from(i) / 4.0)).collect(),
+            _ => (0..=4)
+                .map(|i| d.parameter_at(f64::from(i) / 4.0))
+                .collect(),
         };
         let straight = self.degree() == 1;
         let per = if straight {
             1
         } else {
-            SAMPLES_PER_SPAN.min(MAX_SAMPLES / breaks.len().max(1)).max(1)
+            SAMPLES_PER_SPAN
+                .min(MAX_SAMPLES / breaks.len().max(1))
+                .max(1)
         };
         let mut ts = Vec::with_capacity(per * breaks.len());
         for w in breaks.windows(2) {
@@ -181,16 +187,34 @@ mod tests {
         let c = Curve::from(Circle::new(Plane::WORLD_XY, 1000.0).unwrap());
         let tol = 0.001;
         let at = |r: f64, z: f64| Point3::new(r * 0.6, r * 0.8, z);
-        assert_eq!(c.contains_point(at(999.99, 5.0), tol).unwrap().0, Containment::Inside);
-        assert_eq!(c.contains_point(at(1000.01, 0.0), tol).unwrap().0, Containment::Outside);
-        assert_eq!(c.contains_point(at(1000.0005, 0.0), tol).unwrap().0, Containment::Coincident);
-        assert_eq!(c.contains_point(Point3::ORIGIN, tol).unwrap().0, Containment::Inside);
+        assert_eq!(
+            c.contains_point(at(999.99, 5.0), tol).unwrap().0,
+            Containment::Inside
+        );
+        assert_eq!(
+            c.contains_point(at(1000.01, 0.0), tol).unwrap().0,
+            Containment::Outside
+        );
+        assert_eq!(
+            c.contains_point(at(1000.0005, 0.0), tol).unwrap().0,
+            Containment::Coincident
+        );
+        assert_eq!(
+            c.contains_point(Point3::ORIGIN, tol).unwrap().0,
+            Containment::Inside
+        );
         let (_, projected) = c.contains_point(at(10.0, 5.0), tol).unwrap();
         assert_eq!(projected.z, 0.0);
         // Clockwise the same answers.
         let cw = c.reversed();
-        assert_eq!(cw.contains_point(at(999.99, 5.0), tol).unwrap().0, Containment::Inside);
-        assert_eq!(cw.contains_point(at(1000.01, 0.0), tol).unwrap().0, Containment::Outside);
+        assert_eq!(
+            cw.contains_point(at(999.99, 5.0), tol).unwrap().0,
+            Containment::Inside
+        );
+        assert_eq!(
+            cw.contains_point(at(1000.01, 0.0), tol).unwrap().0,
+            Containment::Outside
+        );
     }
 
     #[test]
@@ -209,9 +233,18 @@ mod tests {
             .unwrap(),
         );
         let t = 1e-3;
-        assert_eq!(l.contains_point(Point3::new(1.5, 1.5, 0.0), t).unwrap().0, Containment::Outside);
-        assert_eq!(l.contains_point(Point3::new(0.5, 1.5, 0.0), t).unwrap().0, Containment::Inside);
-        assert_eq!(l.contains_point(Point3::new(1.0, 1.5, 0.0), t).unwrap().0, Containment::Coincident);
+        assert_eq!(
+            l.contains_point(Point3::new(1.5, 1.5, 0.0), t).unwrap().0,
+            Containment::Outside
+        );
+        assert_eq!(
+            l.contains_point(Point3::new(0.5, 1.5, 0.0), t).unwrap().0,
+            Containment::Inside
+        );
+        assert_eq!(
+            l.contains_point(Point3::new(1.0, 1.5, 0.0), t).unwrap().0,
+            Containment::Coincident
+        );
     }
 
     #[test]
@@ -230,6 +263,9 @@ mod tests {
         );
         assert!(twisted.contains_point(Point3::ORIGIN, 1e-3).is_err());
         let c = Curve::from(Circle::new(Plane::WORLD_XY, 1.0).unwrap());
-        assert!(c.contains_point(Point3::new(f64::NAN, 0.0, 0.0), 1e-3).is_err());
+        assert!(
+            c.contains_point(Point3::new(f64::NAN, 0.0, 0.0), 1e-3)
+                .is_err()
+        );
     }
 }

@@ -253,6 +253,10 @@ mod tests {
         assert_eq!(c.discontinuities(ParametricContinuity::C2), vec![1.0]);
         // A single span has none at any level; a line neither.
         let smooth = Curve::from(c.to_nurbs().trim(Interval::new(0.0, 0.9)).unwrap());
-        assert!(smooth.discontinuities(ParametricContinuity::Infinite).is_empty());
+        assert!(
+            smooth
+                .discontinuities(ParametricContinuity::Infinite)
+                .is_empty()
+        );
     }
 }

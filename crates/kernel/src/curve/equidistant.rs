@@ -39,9 +39,13 @@ impl Curve {
             Curve::Nurbs(c) => c.span_breaks(),
             Curve::Polyline { polyline, .. } => {
                 let n = polyline.segment_count();
-                (0..=n).map(|i| d.parameter_at(i as f64 / n as f64)).collect()
+                (0..=n)
+                    .map(|i| d.parameter_at(i as f64 / n as f64))
+                    .collect()
             }
-            _ => (0..=4).map(|i| d.parameter_at(f64::from(i) / 4.0)).collect(),
+            _ => (0..=4)
+                .map(|i| d.parameter_at(f64::from(i) / 4.0))
+                .collect(),
         };
         let mut grid = Vec::with_capacity(breaks.len() * EQUIDISTANT_SAMPLES);
         for w in breaks.windows(2) {

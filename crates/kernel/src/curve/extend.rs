@@ -16,7 +16,9 @@
 //! (lines into a polyline or a longer line).
 
 use crate::curve::nurbs::basis;
-use crate::{Arc, Circle, Curve, Error, Interval, Line, NurbsCurve, Plane, Point3, Result, Vector3};
+use crate::{
+    Arc, Circle, Curve, Error, Interval, Line, NurbsCurve, Plane, Point3, Result, Vector3,
+};
 
 /// The relative accuracy of a smooth extension's length.
 pub const EXTENSION_LENGTH_TOLERANCE: f64 = 1e-12;
@@ -47,7 +49,9 @@ impl Curve {
             });
         }
         if self.is_closed() {
-            return Err(Error::InvalidInput("a closed curve cannot be extended".into()));
+            return Err(Error::InvalidInput(
+                "a closed curve cannot be extended".into(),
+            ));
         }
         let length = self.length();
         let cut = start.min(0.0).abs() + end.min(0.0).abs();
@@ -96,16 +100,13 @@ impl Curve {
     fn extension(&self, length: f64, style: CurveExtension) -> Result<Extension> {
         let d = self.domain();
         let p = self.end_point();
-        let tangent = self
-            .tangent_from_left(d.t1)?
-            .ok_or(Error::Degenerate {
-                what: "curve tangent at the end",
-            })?;
+        let tangent = self.tangent_from_left(d.t1)?.ok_or(Error::Degenerate {
+            what: "curve tangent at the end",
+        })?;
         let line = || Extension::Append(Curve::from(Line::new(p, p + tangent * length)));
         Ok(match (style, self) {
-            (CurveExtension::Line, _) | (CurveExtension::Smooth, Curve::Line { .. } | Curve::Polyline { .. }) => {
-                line()
-            }
+            (CurveExtension::Line, _)
+            | (CurveExtension::Smooth, Curve::Line { .. } | Curve::Polyline { .. }) => line(),
             (CurveExtension::Smooth, Curve::Arc { arc, .. }) => {
                 let angle = arc.angle.t1 + length / arc.radius();
                 if angle - arc.angle.t0 >= std::f64::consts::TAU {
@@ -140,10 +141,9 @@ impl Curve {
                     )?))
                 }
             }
-            (CurveExtension::Smooth, _) => Extension::Append(Curve::Nurbs(smooth_piece(
-                &self.to_nurbs(),
-                length,
-            )?)),
+            (CurveExtension::Smooth, _) => {
+                Extension::Append(Curve::Nurbs(smooth_piece(&self.to_nurbs(), length)?))
+            }
         })
     }
 
@@ -206,8 +206,7 @@ fn smooth_piece(curve: &NurbsCurve, length: f64) -> Result<NurbsCurve> {
             let h = blossom(&cvs, &us);
             if !(h[3] > 0.0) {
                 return Err(Error::InvalidInput(
-                    "the smooth extension runs past where the curve's end span is defined"
-                        .into(),
+                    "the smooth extension runs past where the curve's end span is defined".into(),
                 ));
             }
             points.push(Point3::new(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
@@ -297,8 +296,11 @@ mod tests {
 
     #[test]
     fn an_arc_extended_smoothly_stays_an_arc() {
-        let arc = Arc::new(Circle::new(Plane::WORLD_XY, 2.0).unwrap(), Interval::new(0.0, 1.0))
-            .unwrap();
+        let arc = Arc::new(
+            Circle::new(Plane::WORLD_XY, 2.0).unwrap(),
+            Interval::new(0.0, 1.0),
+        )
+        .unwrap();
         let c = Curve::from(arc);
         let e = c.extended(0.0, 2.0, CurveExtension::Smooth).unwrap();
         assert!(matches!(e, Curve::Arc { .. }));
@@ -309,7 +311,11 @@ mod tests {
         assert!((e.length() - 4.0).abs() < 1e-9);
         assert!((e.end_point().to_vector().length() - 2.0).abs() < 1e-12);
         let angle: f64 = 2.0;
-        assert!(e.end_point().distance(Point3::new(2.0 * angle.cos(), 2.0 * angle.sin(), 0.0)) < 1e-12);
+        assert!(
+            e.end_point()
+                .distance(Point3::new(2.0 * angle.cos(), 2.0 * angle.sin(), 0.0))
+                < 1e-12
+        );
         let _ = PI;
     }
 
@@ -329,8 +335,12 @@ mod tests {
     #[test]
     fn polylines_and_closed_curves() {
         let l = Curve::from(
-            Polyline::new(vec![Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0), Point3::new(1.0, 1.0, 0.0)])
-                .unwrap(),
+            Polyline::new(vec![
+                Point3::ORIGIN,
+                Point3::new(1.0, 0.0, 0.0),
+                Point3::new(1.0, 1.0, 0.0),
+            ])
+            .unwrap(),
         );
         let e = l.extended(0.0, 1.0, CurveExtension::Arc).unwrap();
         assert_eq!(e.end_point(), Point3::new(1.0, 2.0, 0.0));

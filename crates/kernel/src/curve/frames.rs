@@ -142,11 +142,13 @@ impl Curve {
             Curve::Nurbs(c) => c.span_breaks(),
             Curve::Polyline { polyline, .. } => {
                 let n = polyline.segment_count();
-                (0..=n).map(|i| d.parameter_at(i as f64 / n as f64)).collect()
+                (0..=n)
+                    .map(|i| d.parameter_at(i as f64 / n as f64))
+                    .collect()
             }
-            Curve::Line { .. } | Curve::Circle { .. } | Curve::Arc { .. } => {
-                (0..=4).map(|i| d.parameter_at(f64::from(i) / 4.0)).collect()
-            }
+            Curve::Line { .. } | Curve::Circle { .. } | Curve::Arc { .. } => (0..=4)
+                .map(|i| d.parameter_at(f64::from(i) / 4.0))
+                .collect(),
         };
         breaks.extend_from_slice(kinks);
         breaks.retain(|&b| b > d.t0 && b < d.t1);
@@ -174,8 +176,8 @@ impl Curve {
             turn += angle_between(previous, tangent);
             previous = tangent;
         }
-        let n = ((turn / MAX_STEP_TURN).ceil() as usize)
-            .clamp(MIN_STEPS_PER_SPAN, MAX_FRAME_STEPS + 1);
+        let n =
+            ((turn / MAX_STEP_TURN).ceil() as usize).clamp(MIN_STEPS_PER_SPAN, MAX_FRAME_STEPS + 1);
         Ok((1..=n)
             .map(|i| {
                 if i == n {
@@ -281,7 +283,13 @@ impl<'a> FrameTrack<'a> {
         let zq = self.curve.tangent_at(t).ok_or(Error::Degenerate {
             what: "curve tangent",
         })?;
-        let x = double_reflection(self.points[i], self.zs[i], self.xs[i], self.curve.point_at(t), zq);
+        let x = double_reflection(
+            self.points[i],
+            self.zs[i],
+            self.xs[i],
+            self.curve.point_at(t),
+            zq,
+        );
         Ok((zq, x))
     }
 
@@ -358,10 +366,7 @@ pub(crate) fn plane_normal(curve: &Curve) -> Option<Vector3> {
     let nurbs = curve.to_nurbs();
     let points = nurbs.points();
     let n = points.len() as f64;
-    let centre = points
-        .iter()
-        .fold(Vector3::ZERO, |s, p| s + p.to_vector())
-        / n;
+    let centre = points.iter().fold(Vector3::ZERO, |s, p| s + p.to_vector()) / n;
     let centre = Point3::from_vector(centre);
     let size = points.iter().fold(0.0f64, |m, p| m.max(p.distance(centre)));
     if !(size > 0.0 && size.is_finite()) {
@@ -494,7 +499,11 @@ mod tests {
             (p, z) = (q, zq);
         }
         let end = c.perpendicular_frame_at(d.t1).unwrap();
-        assert!((end.x_axis - x).length() < 1e-9, "{:?} vs {x:?}", end.x_axis);
+        assert!(
+            (end.x_axis - x).length() < 1e-9,
+            "{:?} vs {x:?}",
+            end.x_axis
+        );
     }
 
     #[test]

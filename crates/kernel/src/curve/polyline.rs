@@ -120,7 +120,10 @@ impl Polyline {
             .map(|s| {
                 let a = (s.from - o).cross(s.to - o) * 0.5;
                 normal += a;
-                (a, (o.to_vector() + s.from.to_vector() + s.to.to_vector()) / 3.0)
+                (
+                    a,
+                    (o.to_vector() + s.from.to_vector() + s.to.to_vector()) / 3.0,
+                )
             })
             .collect();
         let n = normal.try_normalize()?;
@@ -243,7 +246,11 @@ mod tests {
         assert!(p.vertex_average().distance(Point3::new(2.0, 1.5, 0.0)) < 1e-15);
         let r = 20f64.sqrt();
         let total = 10.0 + r;
-        let want = Point3::new((8.0 + 8.0 + 2.0 * r) / total, (2.0 + 3.0 * r + 8.0) / total, 0.0);
+        let want = Point3::new(
+            (8.0 + 8.0 + 2.0 * r) / total,
+            (2.0 + 3.0 * r + 8.0) / total,
+            0.0,
+        );
         assert!(p.wire_centroid().distance(want) < 1e-14);
         let want = Point3::new((16.0 + 16.0 / 3.0) / 12.0, (8.0 + 32.0 / 3.0) / 12.0, 0.0);
         assert!(p.area_centroid().unwrap().distance(want) < 1e-14);

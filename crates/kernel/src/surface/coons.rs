@@ -41,9 +41,7 @@ impl NurbsSurface {
             )));
         }
         let chain = chain(edges, tolerance)?;
-        let point = |p: Point3| {
-            NurbsCurve::new_non_rational(1, vec![p, p], vec![0.0, 1.0])
-        };
+        let point = |p: Point3| NurbsCurve::new_non_rational(1, vec![p, p], vec![0.0, 1.0]);
         let (south, east, north, west) = match chain.len() {
             2 => (
                 chain[0].clone(),
@@ -142,7 +140,9 @@ fn chain(edges: &[NurbsCurve], tolerance: f64) -> Result<Vec<NurbsCurve>> {
         let c = rest.remove(k);
         out.push(if reversed { c.reversed() } else { c });
     }
-    let gap = out[out.len() - 1].end_point().distance(out[0].start_point());
+    let gap = out[out.len() - 1]
+        .end_point()
+        .distance(out[0].start_point());
     if gap > tolerance {
         return Err(Error::InvalidInput(format!(
             "the edge curves do not close: the chain's ends are {gap} apart"
@@ -161,7 +161,12 @@ fn normalized(curve: &NurbsCurve) -> Result<NurbsCurve> {
         ));
     }
     let weights = w.iter().map(|x| x / first).collect();
-    NurbsCurve::new(curve.degree(), curve.points().to_vec(), weights, curve.knots().to_vec())
+    NurbsCurve::new(
+        curve.degree(),
+        curve.points().to_vec(),
+        weights,
+        curve.knots().to_vec(),
+    )
 }
 
 /// The Greville abscissae of a knot vector in Rhino form: the averages of `degree`
@@ -236,8 +241,15 @@ mod tests {
             assert!(s.point_at(1.0, t).distance(q) < 1e-12, "{t}");
         }
         // Three edges: the west side collapses to the first curve's start.
-        let tri = NurbsSurface::from_edges(&[arc.clone(), cubic, line(Point3::new(-1.0, 0.0, 0.0), arc.start_point())], 1e-9)
-            .unwrap();
+        let tri = NurbsSurface::from_edges(
+            &[
+                arc.clone(),
+                cubic,
+                line(Point3::new(-1.0, 0.0, 0.0), arc.start_point()),
+            ],
+            1e-9,
+        )
+        .unwrap();
         assert!(tri.is_singular(crate::SurfaceSide::West));
     }
 

@@ -113,17 +113,24 @@ impl NurbsSurface {
         if [a, b, c, d].iter().any(|p| !p.is_finite()) {
             return Err(Error::NotFinite { what: "corner" });
         }
-        let size = [b, c, d]
-            .iter()
-            .fold(0.0f64, |m, p| m.max(p.distance(a)));
-        let spans = (b - a).cross(d - a).length().max((c - b).cross(d - c).length())
+        let size = [b, c, d].iter().fold(0.0f64, |m, p| m.max(p.distance(a)));
+        let spans = (b - a)
+            .cross(d - a)
+            .length()
+            .max((c - b).cross(d - c).length())
             .max((b - a).cross(c - a).length());
         if !(spans > crate::geometry::tolerance::ZERO_TOLERANCE * size * size) {
             return Err(Error::Degenerate {
                 what: "four-point surface",
             });
         }
-        Self::non_rational(1, 1, vec![vec![a, d], vec![b, c]], vec![0.0, 1.0], vec![0.0, 1.0])
+        Self::non_rational(
+            1,
+            1,
+            vec![vec![a, d], vec![b, c]],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
     }
 }
 

@@ -153,9 +153,7 @@ impl<'a> SweepRail<'a> {
         let (x, y) = (x * cos + y * sin, y * cos - x * sin);
         let speed = d[1].length();
         if !(speed > 0.0) {
-            return Err(Error::Degenerate {
-                what: "sweep rail",
-            });
+            return Err(Error::Degenerate { what: "sweep rail" });
         }
         let dz = (d[2] - z * d[2].dot(z)) / speed;
         let w = self.twist_rate;
@@ -191,7 +189,11 @@ impl SweepShape {
     /// # Errors
     /// [`Error::InvalidInput`] for no profiles or parameters that do not increase; the errors of
     /// [`NurbsCurve::make_compatible`] and of the frames.
-    pub(crate) fn new(rail: &SweepRail<'_>, profiles: &[NurbsCurve], params: &[f64]) -> Result<Self> {
+    pub(crate) fn new(
+        rail: &SweepRail<'_>,
+        profiles: &[NurbsCurve],
+        params: &[f64],
+    ) -> Result<Self> {
         if profiles.is_empty() || profiles.len() != params.len() {
             return Err(Error::InvalidInput(
                 "a sweep needs one rail parameter per profile".into(),
@@ -336,7 +338,12 @@ impl SweepShape {
         };
         let row = self.row(rail, t, span, left)?;
         let points = row.points.iter().map(|&p| end.apply(p, row.z)).collect();
-        NurbsCurve::new(self.degree, points, self.weights.clone(), self.knots.clone())
+        NurbsCurve::new(
+            self.degree,
+            points,
+            self.weights.clone(),
+            self.knots.clone(),
+        )
     }
 
     /// The profile as the sweep carries it to `t`.
@@ -353,13 +360,23 @@ impl SweepShape {
 /// The cubic Hermite basis `(h00, h10, h01, h11)` at `s`.
 fn hermite(s: f64) -> (f64, f64, f64, f64) {
     let (s2, s3) = (s * s, s * s * s);
-    (2.0 * s3 - 3.0 * s2 + 1.0, s3 - 2.0 * s2 + s, 3.0 * s2 - 2.0 * s3, s3 - s2)
+    (
+        2.0 * s3 - 3.0 * s2 + 1.0,
+        s3 - 2.0 * s2 + s,
+        3.0 * s2 - 2.0 * s3,
+        s3 - s2,
+    )
 }
 
 /// The derivatives of the Hermite basis at `s`.
 fn hermite_slope(s: f64) -> (f64, f64, f64, f64) {
     let s2 = s * s;
-    (6.0 * s2 - 6.0 * s, 3.0 * s2 - 4.0 * s + 1.0, 6.0 * s - 6.0 * s2, 3.0 * s2 - 2.0 * s)
+    (
+        6.0 * s2 - 6.0 * s,
+        3.0 * s2 - 4.0 * s + 1.0,
+        6.0 * s - 6.0 * s2,
+        3.0 * s2 - 2.0 * s,
+    )
 }
 
 /// One accepted piece of the fit: its parameters and the rows at its ends (start from the
@@ -423,12 +440,7 @@ pub(crate) fn sweep_piece(
                 }
             }
             if error <= tolerance || depth >= MAX_HALVINGS {
-                fitted.push(Fitted {
-                    t0,
-                    t1,
-                    start,
-                    end,
-                });
+                fitted.push(Fitted { t0, t1, start, end });
                 if fitted.len() > MAX_SWEEP_SPANS {
                     return Err(Error::InvalidInput(format!(
                         "the sweep needs more than {MAX_SWEEP_SPANS} spans for the tolerance \
@@ -566,7 +578,8 @@ mod tests {
         let wrapper = Curve::from(rail.clone());
         let r = 0.3;
         let sweep = SweepRail::new(&rail, &wrapper).unwrap();
-        let shape = SweepShape::new(&sweep, &[start_circle(&rail, r)], &[rail.domain().t0]).unwrap();
+        let shape =
+            SweepShape::new(&sweep, &[start_circle(&rail, r)], &[rail.domain().t0]).unwrap();
         let tol = 1e-7;
         let s = sweep_piece(
             &sweep,
@@ -594,13 +607,18 @@ mod tests {
         assert!(worst < tol, "{worst}");
         // The first row is the profile itself.
         let first = s.isocurve(SurfaceDirection::U, dv.t0).unwrap();
-        assert!(first.point_at(1.0).distance(start_circle(&rail, r).point_at(1.0)) < 1e-12);
+        assert!(
+            first
+                .point_at(1.0)
+                .distance(start_circle(&rail, r).point_at(1.0))
+                < 1e-12
+        );
     }
 
     #[test]
     fn a_straight_rail_with_mitred_ends_is_exact() {
-        let rail = NurbsCurve::create(&[Point3::ORIGIN, Point3::new(0.0, 0.0, 4.0)], 1, false)
-            .unwrap();
+        let rail =
+            NurbsCurve::create(&[Point3::ORIGIN, Point3::new(0.0, 0.0, 4.0)], 1, false).unwrap();
         let wrapper = Curve::from(rail.clone());
         let sweep = SweepRail::new(&rail, &wrapper).unwrap();
         let square = crate::Polyline::new(vec![
@@ -618,8 +636,15 @@ mod tests {
             point: Point3::new(0.0, 0.0, 4.0),
             normal,
         };
-        let s = sweep_piece(&sweep, &shape, rail.domain(), [SweepEnd::Square, end], false, 1e-9)
-            .unwrap();
+        let s = sweep_piece(
+            &sweep,
+            &shape,
+            rail.domain(),
+            [SweepEnd::Square, end],
+            false,
+            1e-9,
+        )
+        .unwrap();
         assert_eq!(s.count_v(), 4, "one span");
         // The end edge lies in the mitre plane; the sides stay vertical.
         let top = s.isocurve(SurfaceDirection::U, 1.0).unwrap();
@@ -647,8 +672,15 @@ mod tests {
         assert!(sweep.twist_rate != 0.0);
         let shape =
             SweepShape::new(&sweep, &[start_circle(&rail, 0.2)], &[rail.domain().t0]).unwrap();
-        let s = sweep_piece(&sweep, &shape, rail.domain(), [SweepEnd::Square; 2], true, 1e-8)
-            .unwrap();
+        let s = sweep_piece(
+            &sweep,
+            &shape,
+            rail.domain(),
+            [SweepEnd::Square; 2],
+            true,
+            1e-8,
+        )
+        .unwrap();
         assert!(s.is_closed(SurfaceDirection::V, 1e-12));
         assert!(s.is_closed(SurfaceDirection::U, 1e-12));
         let _ = (TAU, Plane::WORLD_XY);
@@ -670,7 +702,10 @@ mod tests {
             let t = d.parameter_at(f64::from(k) / 4.0);
             let p = s.point_at(s.domain_u().t0, t);
             let r = p.distance(rail.point_at(t));
-            assert!((r - (0.2 + 0.4 * f64::from(k) / 4.0)).abs() < 1e-7, "{k}: {r}");
+            assert!(
+                (r - (0.2 + 0.4 * f64::from(k) / 4.0)).abs() < 1e-7,
+                "{k}: {r}"
+            );
         }
     }
 }

@@ -16,7 +16,12 @@ pub const DIVIDE_DISTANCE: &str = "curve.divide_distance";
 
 /// Registers the division nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [divide_curve(), divide_length(), shatter(), divide_distance()] {
+    for t in [
+        divide_curve(),
+        divide_length(),
+        shatter(),
+        divide_distance(),
+    ] {
         registry.register(t);
     }
 }

@@ -257,7 +257,10 @@ mod tests {
             .run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
         let frames = planes(&r.outputs[0]);
-        assert_eq!(numbers(&r.outputs[1]), vec![0.0, FRAC_PI_2, TAU / 2.0, 3.0 * FRAC_PI_2]);
+        assert_eq!(
+            numbers(&r.outputs[1]),
+            vec![0.0, FRAC_PI_2, TAU / 2.0, 3.0 * FRAC_PI_2]
+        );
         // A closed curve gives N frames; each has z along the tangent and y along the plane
         // normal.
         assert_eq!(frames.len(), 4);

@@ -404,7 +404,9 @@ impl<'a> Decoder<'a> {
 
     fn points(&mut self) -> Result<Vec<Point3>, DecodeError> {
         let n = self.count(24)?;
-        (0..n).map(|_| Ok(Point3::from_array(self.xyz()?))).collect()
+        (0..n)
+            .map(|_| Ok(Point3::from_array(self.xyz()?)))
+            .collect()
     }
 
     fn indices(&mut self) -> Result<Vec<usize>, DecodeError> {
@@ -624,8 +626,8 @@ mod tests {
             vec![0.0, 0.0, 1.0, 1.0],
         )
         .unwrap();
-        let sphere = Brep::from_sphere(&Sphere::new(Point3::new(0.0, 0.0, 1.0), 1.5).unwrap())
-            .unwrap();
+        let sphere =
+            Brep::from_sphere(&Sphere::new(Point3::new(0.0, 0.0, 1.0), 1.5).unwrap()).unwrap();
         let cube = Brep::from_box(&OrientedBox::new(
             plane,
             Interval::new(0.0, 1.0),
@@ -663,15 +665,9 @@ mod tests {
                 [0.0, 0.0, 0.0, 1.0],
             ])),
             Value::Line(Line::new(Point3::ORIGIN, Point3::new(1.0, 2.0, 3.0))),
-            Value::Circle(Circle {
-                plane,
-                radius: 2.5,
-            }),
+            Value::Circle(Circle { plane, radius: 2.5 }),
             Value::Arc(Arc {
-                circle: Circle {
-                    plane,
-                    radius: 1.5,
-                },
+                circle: Circle { plane, radius: 1.5 },
                 angle: Interval::new(0.25, 2.0),
             }),
             Value::Curve(Shared::new(Curve::Nurbs(nurbs))),

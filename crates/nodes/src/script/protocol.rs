@@ -245,7 +245,11 @@ impl Request {
             // A node without inputs solves once: its iterations take no bytes.
             match d.index()? {
                 n @ 0..=1 => n,
-                n => return Err(DecodeError(format!("{n} iterations of a script without inputs"))),
+                n => {
+                    return Err(DecodeError(format!(
+                        "{n} iterations of a script without inputs"
+                    )));
+                }
             }
         } else {
             d.count(2 * inputs.len())?
@@ -356,7 +360,9 @@ impl Reply {
             HELLO => {
                 let magic = d.str()?;
                 if magic != HELLO_MAGIC {
-                    return Err(DecodeError(format!("not a locus script worker ({magic:?})")));
+                    return Err(DecodeError(format!(
+                        "not a locus script worker ({magic:?})"
+                    )));
                 }
                 Ok(Reply::Hello {
                     protocol: u32::try_from(d.index()?).unwrap_or(u32::MAX),

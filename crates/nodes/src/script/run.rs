@@ -43,7 +43,12 @@ struct Recording {
 }
 
 impl Recording {
-    fn shared_index(&mut self, input: usize, address: usize, make: impl FnOnce() -> SharedData) -> usize {
+    fn shared_index(
+        &mut self,
+        input: usize,
+        address: usize,
+        make: impl FnOnce() -> SharedData,
+    ) -> usize {
         if let Some(&(_, _, k)) = self
             .seen
             .iter()
@@ -85,29 +90,34 @@ fn record(spec: &ScriptSpec, ports: &[Port], trees: &[DataTree]) -> Recording {
     let recording = Arc::new(Mutex::new(Recording::default()));
     let sink = recording.clone();
     let accesses: Vec<Access> = spec.inputs.iter().map(|i| i.access).collect();
-    let mut recorder = NodeType::new("script.record", "Record", "Record", "Script").solve(move |s| {
-        let mut r = sink.lock().unwrap_or_else(PoisonError::into_inner);
-        let mut iteration = Vec::with_capacity(accesses.len());
-        for (k, access) in accesses.iter().enumerate() {
-            iteration.push(match access {
-                Access::Item => InputData::Item(s.value(k)),
-                Access::List => {
-                    let branch = s.branch(k);
-                    let address = branch.map_or(0, |b| std::ptr::from_ref(b) as usize);
-                    InputData::Shared(r.shared_index(k, address, || {
-                        SharedData::List(branch.map(|b| b.values().collect()).unwrap_or_default())
-                    }))
-                }
-                Access::Tree => {
-                    let tree = s.tree(k)?;
-                    let address = std::ptr::from_ref(tree) as usize;
-                    InputData::Shared(r.shared_index(k, address, || SharedData::Tree(tree.clone())))
-                }
-            });
-        }
-        r.iterations.push(iteration);
-        Ok(())
-    });
+    let mut recorder =
+        NodeType::new("script.record", "Record", "Record", "Script").solve(move |s| {
+            let mut r = sink.lock().unwrap_or_else(PoisonError::into_inner);
+            let mut iteration = Vec::with_capacity(accesses.len());
+            for (k, access) in accesses.iter().enumerate() {
+                iteration.push(match access {
+                    Access::Item => InputData::Item(s.value(k)),
+                    Access::List => {
+                        let branch = s.branch(k);
+                        let address = branch.map_or(0, |b| std::ptr::from_ref(b) as usize);
+                        InputData::Shared(r.shared_index(k, address, || {
+                            SharedData::List(
+                                branch.map(|b| b.values().collect()).unwrap_or_default(),
+                            )
+                        }))
+                    }
+                    Access::Tree => {
+                        let tree = s.tree(k)?;
+                        let address = std::ptr::from_ref(tree) as usize;
+                        InputData::Shared(
+                            r.shared_index(k, address, || SharedData::Tree(tree.clone())),
+                        )
+                    }
+                });
+            }
+            r.iterations.push(iteration);
+            Ok(())
+        });
     recorder.inputs = ports.to_vec();
     let _ = call(&recorder, trees);
     let mut r = recording.lock().unwrap_or_else(PoisonError::into_inner);
@@ -115,7 +125,11 @@ fn record(spec: &ScriptSpec, ports: &[Port], trees: &[DataTree]) -> Recording {
 }
 
 /// Runs the script over the outer node's input trees and writes its outputs and messages.
-pub(crate) fn run(s: &mut Solve<'_>, spec: &ScriptSpec, pool: &WorkerPool) -> Result<(), NodeError> {
+pub(crate) fn run(
+    s: &mut Solve<'_>,
+    spec: &ScriptSpec,
+    pool: &WorkerPool,
+) -> Result<(), NodeError> {
     if spec.code.trim().is_empty() {
         return Ok(());
     }
@@ -223,12 +237,20 @@ fn replay(
         let outcome = match outcomes.get(i) {
             Some(Ok(o)) => o,
             Some(Err(why)) => return Err(NodeError(why.clone())),
-            None => return Err(NodeError("internal: an iteration that was not recorded".to_owned())),
+            None => {
+                return Err(NodeError(
+                    "internal: an iteration that was not recorded".to_owned(),
+                ));
+            }
         };
         let printed = outcome.printed.trim_end();
         for (k, source) in sources.iter().enumerate() {
             let data = match source {
-                Some(j) => outcome.outputs.get(*j).cloned().unwrap_or(OutputData::Unset),
+                Some(j) => outcome
+                    .outputs
+                    .get(*j)
+                    .cloned()
+                    .unwrap_or(OutputData::Unset),
                 None if printed.is_empty() => OutputData::Unset,
                 None => OutputData::Item(Some(Value::Text(printed.to_owned()))),
             };

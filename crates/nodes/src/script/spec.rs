@@ -127,14 +127,18 @@ impl ScriptSpec {
             .collect();
         let mut seen = Vec::new();
         for (setting, apply) in [
-            ("access", apply_access as fn(&mut InputSpec, &str) -> Result<(), String>),
+            (
+                "access",
+                apply_access as fn(&mut InputSpec, &str) -> Result<(), String>,
+            ),
             ("hints", apply_hint),
         ] {
             seen.clear();
             let text = text_setting(config, setting)?;
             for (name, value) in entries(text).map_err(|e| NodeError(format!("{setting}: {e}")))? {
                 let Some(input) = inputs.iter_mut().find(|i| i.name == name) else {
-                    let names: Vec<&str> = config.inputs.iter().map(|p| p.nickname.as_str()).collect();
+                    let names: Vec<&str> =
+                        config.inputs.iter().map(|p| p.nickname.as_str()).collect();
                     return Err(NodeError(format!(
                         "{setting}: the node has no input {name:?} (its inputs are {})",
                         if names.is_empty() {
@@ -145,7 +149,9 @@ impl ScriptSpec {
                     )));
                 };
                 if seen.contains(&name) {
-                    return Err(NodeError(format!("{setting}: input {name:?} is given twice")));
+                    return Err(NodeError(format!(
+                        "{setting}: input {name:?} is given twice"
+                    )));
                 }
                 apply(input, &value).map_err(|e| NodeError(format!("{setting}: {e}")))?;
                 seen.push(name);
@@ -297,7 +303,9 @@ mod tests {
     #[test]
     fn mistakes_are_errors_naming_the_setting_and_input() {
         let err = |settings: &[(&str, Value)]| spec(settings, &["x", "y"]).unwrap_err().0;
-        assert!(err(&[("access", text("z: list"))]).contains("no input \"z\" (its inputs are x, y)"));
+        assert!(
+            err(&[("access", text("z: list"))]).contains("no input \"z\" (its inputs are x, y)")
+        );
         assert!(err(&[("access", text("x: lists"))]).contains("access must be item, list or tree"));
         assert!(err(&[("access", text("x: list, x: tree"))]).contains("given twice"));
         assert!(err(&[("access", text("x"))]).contains("expected `input: value`"));

@@ -283,7 +283,11 @@ impl Worker {
                 Err(RecvTimeoutError::Disconnected) => self.ended(),
                 _ => format!("could not be sent the script's data: {e}"),
             };
-            fill(&mut outcomes, iterations, &format!("the Python process {why}"));
+            fill(
+                &mut outcomes,
+                iterations,
+                &format!("the Python process {why}"),
+            );
             return (outcomes, false);
         }
         // Reading a large request takes the worker a while before the first iteration: allow
@@ -294,7 +298,11 @@ impl Worker {
             match self.receive(wait) {
                 Received::Reply(Reply::Done(outcome)) => outcomes.push(Ok(outcome)),
                 Received::Reply(Reply::Fatal(why)) => {
-                    fill(&mut outcomes, iterations, &format!("the script did not run: {why}"));
+                    fill(
+                        &mut outcomes,
+                        iterations,
+                        &format!("the script did not run: {why}"),
+                    );
                     return (outcomes, true);
                 }
                 Received::Reply(Reply::Hello { .. }) => {

@@ -59,7 +59,9 @@ pub fn edge_surface() -> NodeType {
         .input(edge("Curve B", "B", "Second edge curve."))
         .input(edge("Curve C", "C", "Optional third edge curve.").optional())
         .input(edge("Curve D", "D", "Optional fourth edge curve.").optional())
-        .output(Port::new("Surface", "S", DataType::Brep).doc("The edge surface, a one-face B-rep."))
+        .output(
+            Port::new("Surface", "S", DataType::Brep).doc("The edge surface, a one-face B-rep."),
+        )
         .solve(|s| {
             let mut edges = vec![curve_input(s, 0)?.to_nurbs(), curve_input(s, 1)?.to_nurbs()];
             for input in [2, 3] {
@@ -75,9 +77,8 @@ pub fn edge_surface() -> NodeType {
 
 /// 4Point Surface \[Srf4Pt\]: the bilinear patch on three or four corners.
 pub fn four_point_surface() -> NodeType {
-    let corner = |name: &str, nick: &str, doc: &str| {
-        Port::new(name, nick, DataType::Point).doc(doc)
-    };
+    let corner =
+        |name: &str, nick: &str, doc: &str| Port::new(name, nick, DataType::Point).doc(doc);
     NodeType::new(FOUR_POINT_SURFACE, "4Point Surface", "Srf4Pt", "Surface")
         .gh_guid("c77a8b3b-c569-4d81-9b59-1c27299a1c45")
         .subcategory("Freeform")
@@ -92,7 +93,14 @@ pub fn four_point_surface() -> NodeType {
         .input(corner("Corner A", "A", "First corner, at (0, 0)."))
         .input(corner("Corner B", "B", "Second corner, at (1, 0)."))
         .input(corner("Corner C", "C", "Third corner, at (1, 1)."))
-        .input(corner("Corner D", "D", "Optional fourth corner, at (0, 1); C when absent.").optional())
+        .input(
+            corner(
+                "Corner D",
+                "D",
+                "Optional fourth corner, at (0, 1); C when absent.",
+            )
+            .optional(),
+        )
         .output(Port::new("Surface", "S", DataType::Surface).doc("The bilinear surface."))
         .solve(|s| {
             let a = *s.item::<Point3>(0)?;
@@ -512,14 +520,17 @@ mod tests {
             .collect();
         assert!(e.len() == 1 && e[0].contains("one line"), "{e:?}");
         let r = corners(&[p(0.0), Point3::new(f64::NAN, 0.0, 0.0), p(2.0)]);
-        assert!(r.messages.iter().any(|m| m.level == Level::Error), "{:?}", r.messages);
+        assert!(
+            r.messages.iter().any(|m| m.level == Level::Error),
+            "{:?}",
+            r.messages
+        );
     }
 
     #[test]
     fn edge_surface_of_four_lines() {
-        let line = |a: Point3, b: Point3| {
-            DataTree::from_item(Value::Line(locus_kernel::Line::new(a, b)))
-        };
+        let line =
+            |a: Point3, b: Point3| DataTree::from_item(Value::Line(locus_kernel::Line::new(a, b)));
         let (a, b, c, d) = (
             Point3::new(0.0, 0.0, 0.0),
             Point3::new(3.0, 0.0, 0.0),

@@ -212,7 +212,9 @@ mod tests {
         let run = |miter: i64| {
             NodeCall::new(&sweep1())
                 .input(DataTree::from_item(Shared::new(Curve::from(rail.clone()))))
-                .input(DataTree::from_item(Shared::new(Curve::from(square.clone()))))
+                .input(DataTree::from_item(Shared::new(Curve::from(
+                    square.clone(),
+                ))))
                 .input(DataTree::from_item(miter))
                 .run()
         };

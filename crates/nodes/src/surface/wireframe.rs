@@ -76,7 +76,12 @@ mod tests {
     use crate::test_support::*;
 
     fn unit_box() -> OrientedBox {
-        OrientedBox::new(Plane::WORLD_XY, Interval::UNIT, Interval::UNIT, Interval::UNIT)
+        OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::UNIT,
+            Interval::UNIT,
+            Interval::UNIT,
+        )
     }
 
     #[test]

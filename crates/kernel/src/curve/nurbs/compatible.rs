@@ -148,7 +148,10 @@ impl NurbsCurve {
             return Err(Error::NotFinite { what: "factor" });
         }
         let curves = Self::make_compatible(&[a.clone(), b.clone()])?;
-        let (ha, hb) = (curves[0].homogeneous_points(), curves[1].homogeneous_points());
+        let (ha, hb) = (
+            curves[0].homogeneous_points(),
+            curves[1].homogeneous_points(),
+        );
         let blended: Vec<[f64; 4]> = ha
             .iter()
             .zip(&hb)
@@ -309,7 +312,11 @@ mod tests {
     #[test]
     fn tweens_blend_between_two_curves() {
         let a = NurbsCurve::create(
-            &[Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 1.0, 0.0), Point3::new(2.0, 0.0, 0.0)],
+            &[
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 1.0, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+            ],
             2,
             false,
         )
@@ -335,7 +342,11 @@ mod tests {
             assert!(half.point_at(s).distance(mid) < 1e-12, "{s}");
         }
         let zero = NurbsCurve::tween(&a, &b, 0.0).unwrap();
-        assert!(zero.point_at(0.3).distance(a.point_at(a.domain().parameter_at(0.3))) < 1e-12);
+        assert!(
+            zero.point_at(0.3)
+                .distance(a.point_at(a.domain().parameter_at(0.3)))
+                < 1e-12
+        );
         assert!(NurbsCurve::tween(&a, &b, f64::NAN).is_err());
     }
 }
