@@ -301,13 +301,14 @@ mod tests {
             .unwrap(),
         );
         let circle = Curve::from(Circle::new(Plane::WORLD_YZ, 0.25).unwrap());
-        let b = Brep::sweep(&rail, &[circle.clone()], SweepMiter::Trim, 1e-9).unwrap();
+        let b = Brep::sweep(&rail, std::slice::from_ref(&circle), SweepMiter::Trim, 1e-9).unwrap();
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].faces().len(), 2);
         let area = b[0].area().unwrap();
         assert!((area - 2.0 * PI * 0.25 * 4.0).abs() < 1e-9, "{area}");
         // Not mitred the two tubes stay apart.
-        let apart = Brep::sweep(&rail, &[circle.clone()], SweepMiter::None, 1e-9).unwrap();
+        let apart =
+            Brep::sweep(&rail, std::slice::from_ref(&circle), SweepMiter::None, 1e-9).unwrap();
         assert_eq!(apart.len(), 2);
         // Rotated the profile keeps its size on the bisecting plane; the faces join.
         let rotated = Brep::sweep(&rail, &[circle], SweepMiter::Rotate, 1e-9).unwrap();

@@ -96,7 +96,7 @@ impl Brep {
         }
         crossings.sort_by(f64::total_cmp);
         crossings.dedup_by(|b, a| (*b - *a).abs() <= 1e-12 * (1.0 + a.abs()));
-        if crossings.len() % 2 != 0 {
+        if !crossings.len().is_multiple_of(2) {
             return Vec::new();
         }
         crossings

@@ -22,7 +22,7 @@ impl Curve {
             Curve::Line { .. } | Curve::Polyline { .. } => return None,
             Curve::Nurbs(_) => {}
         }
-        if !(tolerance >= 0.0) {
+        if tolerance.is_nan() || tolerance < 0.0 {
             return None;
         }
         let d = self.domain();

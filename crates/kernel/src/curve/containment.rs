@@ -47,7 +47,7 @@ impl Curve {
             return Err(Error::InvalidInput("the curve is not closed".into()));
         }
         let (polygon, deviation) = self.sample_polygon();
-        let (origin, normal) = plane_of(&polygon, &self.to_nurbs().points().to_vec(), tolerance)?;
+        let (origin, normal) = plane_of(&polygon, self.to_nurbs().points(), tolerance)?;
         let projected = p - normal * (p - origin).dot(normal);
         let closest = self.closest_point(projected)?;
         if closest.distance <= tolerance {

@@ -29,7 +29,7 @@ impl Curve {
         }
         // Each step covers at least the distance along the curve.
         let bound = self.length() / distance;
-        if !(bound < MAX_DIVISIONS as f64) {
+        if bound.is_nan() || bound >= MAX_DIVISIONS as f64 {
             return Err(Error::InvalidInput(format!(
                 "dividing by {distance} could make more than {MAX_DIVISIONS} points"
             )));

@@ -177,8 +177,9 @@ fn blossom(cvs: &[[f64; 4]], us: &[f64]) -> [f64; 4] {
     let mut work = cvs.to_vec();
     for (level, &u) in us.iter().enumerate() {
         for i in 0..work.len() - 1 - level {
-            for c in 0..4 {
-                work[i][c] = (1.0 - u) * work[i][c] + u * work[i + 1][c];
+            let next = work[i + 1];
+            for (c, value) in work[i].iter_mut().enumerate() {
+                *value = (1.0 - u) * *value + u * next[c];
             }
         }
     }
@@ -204,7 +205,7 @@ fn smooth_piece(curve: &NurbsCurve, length: f64) -> Result<NurbsCurve> {
                 .chain(std::iter::repeat_n(s, i))
                 .collect();
             let h = blossom(&cvs, &us);
-            if !(h[3] > 0.0) {
+            if h[3].is_nan() || h[3] <= 0.0 {
                 return Err(Error::InvalidInput(
                     "the smooth extension runs past where the curve's end span is defined".into(),
                 ));

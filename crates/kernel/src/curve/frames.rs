@@ -377,7 +377,7 @@ pub(crate) fn plane_normal(curve: &Curve) -> Option<Vector3> {
     let mut normal = Vector3::ZERO;
     for (i, p) in points.iter().enumerate() {
         let q = points[(i + 1) % points.len()];
-        normal = normal + (*p - centre).cross(q - centre);
+        normal += (*p - centre).cross(q - centre);
     }
     if normal.length() <= 1e-6 * size * size {
         let step = (points.len() / 64).max(1);

@@ -35,7 +35,7 @@ impl NurbsSurface {
                 edges.len()
             )));
         }
-        if !(tolerance >= 0.0) {
+        if tolerance.is_nan() || tolerance < 0.0 {
             return Err(Error::InvalidInput(format!(
                 "the tolerance must not be negative, got {tolerance}"
             )));
@@ -90,7 +90,7 @@ impl NurbsSurface {
                     h[k] = s[i][k] * (1.0 - b) + n[i][k] * b + w[j][k] * (1.0 - a) + e[j][k] * a
                         - bilinear;
                 }
-                if !(h[3] > 0.0) {
+                if h[3].is_nan() || h[3] <= 0.0 {
                     return Err(Error::InvalidInput(
                         "the edge curves' weights blend to a weight that is not positive".into(),
                     ));
@@ -257,7 +257,7 @@ mod tests {
     fn bad_edges() {
         let a = line(Point3::ORIGIN, Point3::new(1.0, 0.0, 0.0));
         let b = line(Point3::new(1.0, 0.0, 0.0), Point3::new(1.0, 1.0, 0.0));
-        assert!(NurbsSurface::from_edges(&[a.clone()], 1e-9).is_err());
+        assert!(NurbsSurface::from_edges(std::slice::from_ref(&a), 1e-9).is_err());
         assert!(NurbsSurface::from_edges(&[a.clone(), b.clone()], 1e-9).is_err());
         let c = line(Point3::new(5.0, 5.0, 0.0), Point3::new(6.0, 5.0, 0.0));
         assert!(NurbsSurface::from_edges(&[a, b, c], 1e-9).is_err());

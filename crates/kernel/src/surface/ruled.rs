@@ -119,7 +119,8 @@ impl NurbsSurface {
             .length()
             .max((c - b).cross(d - c).length())
             .max((b - a).cross(c - a).length());
-        if !(spans > crate::geometry::tolerance::ZERO_TOLERANCE * size * size) {
+        let least = crate::geometry::tolerance::ZERO_TOLERANCE * size * size;
+        if spans.is_nan() || spans <= least {
             return Err(Error::Degenerate {
                 what: "four-point surface",
             });

@@ -152,7 +152,7 @@ impl<'a> SweepRail<'a> {
         let (sin, cos) = phi.sin_cos();
         let (x, y) = (x * cos + y * sin, y * cos - x * sin);
         let speed = d[1].length();
-        if !(speed > 0.0) {
+        if speed.is_nan() || speed <= 0.0 {
             return Err(Error::Degenerate { what: "sweep rail" });
         }
         let dz = (d[2] - z * d[2].dot(z)) / speed;

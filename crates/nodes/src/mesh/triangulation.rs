@@ -325,7 +325,7 @@ mod tests {
     #[test]
     fn repeated_and_null_points_are_reported_and_left_out() {
         let mut tree = five();
-        tree.branch_mut(&TreePath::new(&[0]))
+        tree.branch_mut(&TreePath::new([0]))
             .unwrap()
             .push(Point3::new(4.0, 0.0, 0.0));
         let r = NodeCall::new(&delaunay_mesh()).input(tree).run();
@@ -362,9 +362,9 @@ mod tests {
         assert_clean(&r);
         let c = &r.outputs[0];
         assert_eq!(c.branch_count(), 5);
-        let e = c.branch(&TreePath::new(&[0, 4])).unwrap();
+        let e = c.branch(&TreePath::new([0, 4])).unwrap();
         assert_eq!(
-            DataTree::from_branches([(TreePath::new(&[0]), e.clone())]),
+            DataTree::from_branches([(TreePath::new([0]), e.clone())]),
             DataTree::from_list(vec![0i64, 1, 2, 3])
         );
         let lines = all::<locus_kernel::Line>(&r.outputs[1]);
