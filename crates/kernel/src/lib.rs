@@ -38,6 +38,9 @@ mod surface;
 mod transform;
 
 pub use crate::brep::mass::{AreaProperties, VolumeProperties};
+pub use crate::brep::pipe::PipeCaps;
+pub use crate::brep::sweep::{MAX_SWEEP_PROFILES, SweepMiter};
+pub use crate::brep::wireframe::MAX_WIRE_DENSITY;
 pub use crate::brep::{
     Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, EdgeKind, LoopKind, TrimKind,
 };
@@ -47,9 +50,14 @@ pub use crate::curve::arc_length::MAX_DIVISIONS;
 pub use crate::curve::bezier::Bezier;
 pub use crate::curve::circle::Circle;
 pub use crate::curve::closest_point::CurveClosestPoint;
+pub use crate::curve::containment::Containment;
 pub use crate::curve::continuity::{
-    Continuity, ContinuityTolerances, continuity, continuity_with_tolerances,
+    Continuity, ContinuityTolerances, DERIVATIVE_TOLERANCE, ParametricContinuity, continuity,
+    continuity_with_tolerances,
 };
+pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
+pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
+pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::hermite::CubicHermite;
 pub use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
 pub use crate::curve::line::Line;
@@ -93,4 +101,5 @@ pub use crate::surface::derivatives::SurfaceDerivatives;
 pub use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 pub use crate::surface::forms::{Cone, Cylinder, Sphere};
 pub use crate::surface::loft::{LoftType, MAX_LOFT_SECTIONS};
+pub use crate::surface::sweep::MAX_SWEEP_SPANS;
 pub use crate::transform::Transform;

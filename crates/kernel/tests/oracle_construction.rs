@@ -11,11 +11,17 @@
 //! - `cap_holes`: [`Brep::cap_planar_holes`] on extrusions and ruled lofts: caps added, closed,
 //!   volume (the `surface` recipe, `ch-05`, is not replayed);
 //! - `join_curves`: [`Curve::join`]: chain count, closed, length;
-//! - `planar_boundary`: [`Brep::planar_regions`]: total area, per-face area and centroid.
+//! - `planar_boundary`: [`Brep::planar_regions`]: total area, per-face area and centroid;
+//! - `pipe`: [`Brep::pipe`] open (lateral area and centroid) and with flat caps (area, volume,
+//!   volume centroid), and the start circle's points on the tube; the thick-walled `pi-07` is
+//!   not replayed (Grasshopper's Pipe has no inner radius);
+//! - `four_point_surface`: [`NurbsSurface::from_corners`]: area, centroid, centre point,
+//!   corners, bounding box;
+//! - `edge_surface`: [`NurbsSurface::from_edges`]: the boundary points on the patch, the area
+//!   where it is forced (planar edges) and, for straight edges, the bilinear patch's area.
 //!
 //! Not replayed yet: `offset` (the cases' inside/outside and left/right sides still have to be
-//! mapped onto the kernel's signed distance), `pipe`, `four_point_surface`, `edge_surface`
-//! (no kernel builders yet).
+//! mapped onto the kernel's signed distance).
 //!
 //! Tolerances are the file's (`tolerances.areas_volumes`, `points_on_result`): 1e-9 relative for
 //! exact constructions, 1e-6 for smooth lofts; centroids 1e-8 × max(1, size); points 1e-7
@@ -25,7 +31,9 @@ mod support;
 
 use std::f64::consts::TAU;
 
-use locus_kernel::{Brep, Curve, Interval, LoftType, NurbsCurve, NurbsSurface, Point3, Vector3};
+use locus_kernel::{
+    Brep, Curve, Interval, LoftType, NurbsCurve, NurbsSurface, PipeCaps, Point3, Vector3,
+};
 use serde_json::Value;
 use support::{Failures, close, close3, load_oracle, num, numbers, triple};
 
@@ -443,4 +451,147 @@ fn planar_boundary_cases() {
         }
     }
     f.finish("planar boundary");
+}
+
+/// The fit tolerance the pipe replays give [`Brep::pipe`]: well inside the cases' 1e-6 on
+/// areas and 1e-8 on centroids.
+const PIPE_FIT: f64 = 1e-9;
+
+#[test]
+fn pipe_cases() {
+    let mut f = Failures::default();
+    for case in cases("pipe") {
+        let id = id(&case);
+        let inputs = &case["inputs"];
+        let e = &case["expected"];
+        if !inputs["inner_radius"].is_null() {
+            // A thick-walled pipe (pi-07): Grasshopper's Pipe has no inner radius.
+            continue;
+        }
+        let rail = Curve::Nurbs(nurbs(&inputs["path"]));
+        let radius = num(&inputs["radius"]);
+        let build = |caps| match Brep::pipe(&rail, radius, caps, PIPE_FIT) {
+            Ok(mut b) if b.len() == 1 => Ok(b.remove(0)),
+            Ok(b) => Err(format!("{} breps", b.len())),
+            Err(err) => Err(err.to_string()),
+        };
+        let (open, capped) = match (build(PipeCaps::None), build(PipeCaps::Flat)) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(err), _) | (_, Err(err)) => {
+                f.push(format!("{id}: pipe failed: {err}"));
+                continue;
+            }
+        };
+        // The tube alone: the lateral area and its centroid.
+        let lateral = serde_json::json!({
+            "area": e["lateral_area"],
+            "lateral_area_centroid": e["lateral_area_centroid"],
+        });
+        check_area(
+            &mut f,
+            &id,
+            &open,
+            &lateral,
+            FITTED,
+            "lateral_area_centroid",
+        );
+        f.check(capped.is_solid(), || format!("{id}: not a closed solid"));
+        check_area(&mut f, &id, &capped, e, FITTED, "no centroid");
+        check_volume(&mut f, &id, &capped, e, FITTED);
+        let faces: Vec<NurbsSurface> = open.faces().iter().map(|x| x.surface.clone()).collect();
+        for p in e["start_circle_points"].as_array().unwrap() {
+            check_on(&mut f, &id, &faces, point(p), ON_FITTED);
+        }
+    }
+    f.finish("pipe");
+}
+
+#[test]
+fn four_point_surface_cases() {
+    let mut f = Failures::default();
+    for case in cases("four_point_surface") {
+        let id = id(&case);
+        let e = &case["expected"];
+        let p: Vec<Point3> = case["inputs"]["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(point)
+            .collect();
+        let d = p.get(3).copied().unwrap_or(p[2]);
+        let surface = match NurbsSurface::from_corners(p[0], p[1], p[2], d) {
+            Ok(s) => s,
+            Err(err) => {
+                f.push(format!("{id}: four-point surface failed: {err}"));
+                continue;
+            }
+        };
+        let brep = Brep::from_surface(surface.clone()).expect("a brep from the surface");
+        check_area(&mut f, &id, &brep, e, EXACT, "area_centroid");
+        let centre = surface.point_at(0.5, 0.5);
+        let want = triple(&e["center_point"]);
+        f.check(close3(centre.to_array(), want, CENTROID), || {
+            format!("{id}: centre {centre:?}, expected {want:?}")
+        });
+        for (k, c) in e["corners"].as_array().unwrap().iter().enumerate() {
+            let (u, v) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][k];
+            let got = surface.point_at(u, v).to_array();
+            let want = triple(c);
+            f.check(close3(got, want, 1e-15), || {
+                format!("{id}: corner {k} {got:?}, expected {want:?}")
+            });
+        }
+        let bbox = brep.bounding_box();
+        for (got, key) in [(bbox.min, "min"), (bbox.max, "max")] {
+            let want = triple(&e["bbox"][key]);
+            f.check(close3(got.to_array(), want, CENTROID), || {
+                format!("{id}: bbox {key} {got:?}, expected {want:?}")
+            });
+        }
+    }
+    f.finish("four_point_surface");
+}
+
+#[test]
+fn edge_surface_cases() {
+    let mut f = Failures::default();
+    for case in cases("edge_surface") {
+        let id = id(&case);
+        let e = &case["expected"];
+        let curves: Vec<NurbsCurve> = case["inputs"]["curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(nurbs)
+            .collect();
+        let surface = match NurbsSurface::from_edges(&curves, MODEL_TOL) {
+            Ok(s) => s,
+            Err(err) => {
+                f.push(format!("{id}: edge surface failed: {err}"));
+                continue;
+            }
+        };
+        let brep = Brep::from_surface(surface.clone()).expect("a brep from the surface");
+        // Where the interior is forced the area is given; a bilinearly blended Coons patch
+        // on straight edges is the bilinear patch, whose area is given too.
+        let area = e["area"].as_f64().or(e["bilinear_area"].as_f64());
+        if let Some(want) = area {
+            let got = brep.area().unwrap_or(f64::NAN);
+            f.check(close(got, want, EXACT), || {
+                format!("{id}: area {got}, expected {want}")
+            });
+        }
+        for item in e["boundary_points_on_result"].as_array().unwrap() {
+            for p in item["points"].as_array().unwrap() {
+                check_on(
+                    &mut f,
+                    &id,
+                    std::slice::from_ref(&surface),
+                    point(p),
+                    ON_RESULT,
+                );
+            }
+        }
+    }
+    f.finish("edge_surface");
 }

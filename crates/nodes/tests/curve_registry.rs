@@ -2,7 +2,8 @@
 //! category holds no node that is not listed here.
 
 use locus_nodes::curve::{
-    analysis, division, edit, primitive, primitive_more, primitive_rect, spline, util,
+    analysis, division, edit, extend, frames, primitive, primitive_more, primitive_rect, regions,
+    spline, util,
 };
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
@@ -33,6 +34,7 @@ fn curve_ids_are_registered() {
         division::DIVIDE_CURVE,
         division::DIVIDE_LENGTH,
         division::SHATTER,
+        division::DIVIDE_DISTANCE,
         util::FLIP_CURVE,
         util::SPLIT_CURVE,
         primitive_more::LINE_SDL,
@@ -48,6 +50,15 @@ fn curve_ids_are_registered() {
         edit::JOIN_CURVES,
         edit::EXPLODE,
         edit::OFFSET_CURVE,
+        frames::CURVE_FRAME,
+        frames::PERP_FRAME,
+        frames::CURVE_FRAMES,
+        frames::PERP_FRAMES,
+        regions::POLYGON_CENTER,
+        regions::POINT_IN_CURVE,
+        extend::EXTEND_CURVE,
+        extend::TWEEN_CURVE,
+        extend::DISCONTINUITY,
     ];
     for id in ids {
         let t = registry

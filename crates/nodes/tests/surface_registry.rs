@@ -2,7 +2,7 @@
 //! Surface parameter are registered under their ids, in their category and subcategory.
 
 use locus_nodes::params;
-use locus_nodes::surface::{analysis, freeform, primitive, util};
+use locus_nodes::surface::{analysis, freeform, primitive, sweeping, util, wireframe};
 use locus_runtime::NodeRegistry;
 
 #[test]
@@ -15,6 +15,11 @@ fn surface_ids_are_registered() {
         (primitive::CONE, "Primitive"),
         (primitive::PLANE_SURFACE, "Primitive"),
         (freeform::SURFACE_FROM_POINTS, "Freeform"),
+        (sweeping::PIPE, "Freeform"),
+        (sweeping::SWEEP1, "Freeform"),
+        (freeform::FOUR_POINT_SURFACE, "Freeform"),
+        (freeform::EDGE_SURFACE, "Freeform"),
+        (wireframe::BREP_WIREFRAME, "Analysis"),
         (analysis::EVALUATE_SURFACE, "Analysis"),
         (analysis::SURFACE_CLOSEST_POINT, "Analysis"),
         (analysis::PRINCIPAL_CURVATURE, "Analysis"),

@@ -25,7 +25,10 @@ pub(crate) mod extrude;
 pub(crate) mod join;
 pub(crate) mod mass;
 pub(crate) mod parts;
+pub(crate) mod pipe;
 pub(crate) mod planar;
+pub(crate) mod sweep;
+pub(crate) mod wireframe;
 
 use crate::surface::direction::SurfaceSide;
 use crate::{Error, NurbsCurve, NurbsSurface, Point3, Result, Transform};

@@ -86,6 +86,81 @@ pub fn continuity_with_tolerances(
     }
 }
 
+/// How smooth a curve must be at a parameter for [`Curve::discontinuities`] to pass over it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ParametricContinuity {
+    /// The first derivative is continuous (C1).
+    C1,
+    /// The first and second derivatives are continuous (C2).
+    C2,
+    /// Every derivative up to the degree is continuous (C∞ for a piecewise polynomial).
+    Infinite,
+}
+
+/// The relative difference between derivatives from the left and from the right above which
+/// they differ: 1e-8 of the larger.
+pub const DERIVATIVE_TOLERANCE: f64 = 1e-8;
+
+impl Curve {
+    /// The parameters strictly inside the domain where the curve is less smooth than `level`
+    /// (Grasshopper's Discontinuity, Rhino's `GetNextDiscontinuity` with `Cn_continuous`):
+    /// polyline vertices and NURBS knots where a derivative up to the level's order differs
+    /// from the left and from the right by more than [`DERIVATIVE_TOLERANCE`] of the larger.
+    /// Parametric, so a joint where the direction goes on but the speed changes counts. Lines,
+    /// circles and arcs have none; a closed curve's seam is not inside the domain.
+    pub fn discontinuities(&self, level: ParametricContinuity) -> Vec<f64> {
+        let d = self.domain();
+        match self {
+            Curve::Line { .. } | Curve::Circle { .. } | Curve::Arc { .. } => Vec::new(),
+            Curve::Polyline { polyline, .. } => {
+                let n = polyline.segment_count();
+                (1..n)
+                    .filter(|&i| {
+                        let a = polyline.segment(i - 1).direction();
+                        let b = polyline.segment(i).direction();
+                        differs(a, b)
+                    })
+                    .map(|i| d.parameter_at(i as f64 / n as f64))
+                    .collect()
+            }
+            Curve::Nurbs(c) => {
+                let p = c.degree();
+                let order = match level {
+                    ParametricContinuity::C1 => 1,
+                    ParametricContinuity::C2 => 2,
+                    ParametricContinuity::Infinite => p,
+                };
+                let knots = c.knots();
+                let mut out = Vec::new();
+                let mut i = 0;
+                while i < knots.len() {
+                    let k = knots[i];
+                    let m = knots[i..].iter().take_while(|&&x| x == k).count();
+                    // A knot of multiplicity m leaves C^(p−m): only where that is below the
+                    // order asked for can the derivatives differ. Inside the domain i ≥ p.
+                    if k > d.t0 && k < d.t1 && p < order + m {
+                        let right = crate::curve::nurbs::basis::span_index(p, knots, k);
+                        let mut a = vec![crate::Vector3::ZERO; order + 1];
+                        let mut b = vec![crate::Vector3::ZERO; order + 1];
+                        c.derivatives_in_span(i - 1, k, &mut a);
+                        c.derivatives_in_span(right, k, &mut b);
+                        if (1..=order).any(|j| differs(a[j], b[j])) {
+                            out.push(k);
+                        }
+                    }
+                    i += m;
+                }
+                out
+            }
+        }
+    }
+}
+
+/// Whether two derivative vectors differ by more than [`DERIVATIVE_TOLERANCE`] of the larger.
+fn differs(a: crate::Vector3, b: crate::Vector3) -> bool {
+    (a - b).length() > DERIVATIVE_TOLERANCE * a.length().max(b.length())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -143,5 +218,45 @@ mod tests {
             ..ContinuityTolerances::default()
         };
         assert_eq!(continuity_with_tolerances(&l1, &l2, loose), Continuity::G2);
+    }
+
+    #[test]
+    fn discontinuities_of_polylines_and_joined_curves() {
+        use crate::{Interval, NurbsCurve, Point3, Polyline};
+        let l = Curve::from(
+            Polyline::new(vec![
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 0.0, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+                Point3::new(2.0, 1.0, 0.0),
+            ])
+            .unwrap(),
+        );
+        // The straight vertex is smooth; the corner is not.
+        assert_eq!(l.discontinuities(ParametricContinuity::C1), vec![2.0]);
+        // A cubic with a double knot is C1 but not C2 there.
+        let c = NurbsCurve::new_non_rational(
+            3,
+            vec![
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 1.0, 0.0),
+                Point3::new(2.0, -1.0, 0.0),
+                Point3::new(3.0, 2.0, 0.0),
+                Point3::new(4.0, 0.0, 0.0),
+                Point3::new(5.0, 1.0, 0.0),
+            ],
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.0],
+        )
+        .unwrap();
+        let c = Curve::from(c);
+        assert!(c.discontinuities(ParametricContinuity::C1).is_empty());
+        assert_eq!(c.discontinuities(ParametricContinuity::C2), vec![1.0]);
+        // A single span has none at any level; a line neither.
+        let smooth = Curve::from(c.to_nurbs().trim(Interval::new(0.0, 0.9)).unwrap());
+        assert!(
+            smooth
+                .discontinuities(ParametricContinuity::Infinite)
+                .is_empty()
+        );
     }
 }

@@ -10,12 +10,17 @@
 //! Measurements (length, division, closest point) are in `curve_measure.rs`.
 
 pub(crate) mod arc;
+pub(crate) mod arc_fit;
 pub(crate) mod arc_length;
 pub(crate) mod bezier;
 pub(crate) mod bezier_piece;
 pub(crate) mod circle;
 pub(crate) mod closest_point;
+pub(crate) mod containment;
 pub(crate) mod continuity;
+pub(crate) mod equidistant;
+pub(crate) mod extend;
+pub(crate) mod frames;
 pub(crate) mod hermite;
 pub(crate) mod join;
 pub(crate) mod kinks;

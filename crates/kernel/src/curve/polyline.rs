@@ -1,7 +1,7 @@
 //! Polylines: chains of line segments.
 
 use crate::geometry::tolerance::ZERO_TOLERANCE;
-use crate::{Error, Interval, Line, NurbsCurve, Point3, Result, Transform};
+use crate::{Error, Interval, Line, NurbsCurve, Point3, Result, Transform, Vector3};
 
 /// A chain of straight segments through at least two finite points, as Rhino's `Polyline`.
 ///
@@ -74,6 +74,66 @@ impl Polyline {
     pub fn is_closed(&self) -> bool {
         self.points.len() >= 4
             && self.points[0].distance(self.points[self.points.len() - 1]) <= ZERO_TOLERANCE
+    }
+
+    /// The average of the vertices (Grasshopper's Polygon Center, CenterV); the closing
+    /// vertex of a closed polyline, which repeats the first, is counted once.
+    pub fn vertex_average(&self) -> Point3 {
+        let pts = if self.is_closed() {
+            &self.points[..self.points.len() - 1]
+        } else {
+            &self.points[..]
+        };
+        let sum = pts.iter().fold(Vector3::ZERO, |s, p| s + p.to_vector());
+        Point3::from_vector(sum / pts.len() as f64)
+    }
+
+    /// The centroid of the segments as a wire of uniform density: their midpoints weighted by
+    /// their lengths (Polygon Center's CenterE); the vertex average when the polyline has no
+    /// length.
+    pub fn wire_centroid(&self) -> Point3 {
+        let (mut sum, mut total) = (Vector3::ZERO, 0.0);
+        for s in self.segments() {
+            let l = s.length();
+            sum += (s.from.to_vector() + s.to.to_vector()) * (0.5 * l);
+            total += l;
+        }
+        if total > 0.0 {
+            Point3::from_vector(sum / total)
+        } else {
+            self.vertex_average()
+        }
+    }
+
+    /// The area centroid of the region a closed polyline bounds (Polygon Center's CenterA):
+    /// the triangles from the vertex average to every segment, weighted by their vector areas
+    /// projected on the polygon's normal (Newell's), which is the planar centroid for a planar
+    /// polygon. `None` for an open polyline or one that encloses no area.
+    pub fn area_centroid(&self) -> Option<Point3> {
+        if !self.is_closed() {
+            return None;
+        }
+        let o = self.vertex_average();
+        let mut normal = Vector3::ZERO;
+        let areas: Vec<(Vector3, Vector3)> = self
+            .segments()
+            .map(|s| {
+                let a = (s.from - o).cross(s.to - o) * 0.5;
+                normal += a;
+                (
+                    a,
+                    (o.to_vector() + s.from.to_vector() + s.to.to_vector()) / 3.0,
+                )
+            })
+            .collect();
+        let n = normal.try_normalize()?;
+        let (mut sum, mut total) = (Vector3::ZERO, 0.0);
+        for (a, c) in areas {
+            let w = a.dot(n);
+            sum += c * w;
+            total += w;
+        }
+        (total != 0.0 && total.is_finite()).then(|| Point3::from_vector(sum / total))
     }
 
     /// The segment index and local parameter in `[0, 1]` of the parameter `t`; parameters
@@ -167,6 +227,37 @@ mod tests {
             let t = i as f64 / 10.0;
             assert!(n.point_at(t).distance(p.point_at(t)) < 1e-14);
         }
+    }
+
+    #[test]
+    fn centres_of_a_polygon() {
+        // A trapezoid (0,0), (4,0), (4,2), (0,4): vertex average (2, 1.5); edges of lengths
+        // 4, 2, √20, 4 with midpoints (2,0), (4,1), (2,3), (0,2); area 12 made of the
+        // rectangle 4 × 2 (centroid (2,1), area 8) and the triangle (0,2), (4,2), (0,4)
+        // (centroid (4/3, 8/3), area 4): centroid (16 + 16/3, 8 + 32/3) / 12.
+        let p = Polyline::new(vec![
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(4.0, 0.0, 0.0),
+            Point3::new(4.0, 2.0, 0.0),
+            Point3::new(0.0, 4.0, 0.0),
+            Point3::new(0.0, 0.0, 0.0),
+        ])
+        .unwrap();
+        assert!(p.vertex_average().distance(Point3::new(2.0, 1.5, 0.0)) < 1e-15);
+        let r = 20f64.sqrt();
+        let total = 10.0 + r;
+        let want = Point3::new(
+            (8.0 + 8.0 + 2.0 * r) / total,
+            (2.0 + 3.0 * r + 8.0) / total,
+            0.0,
+        );
+        assert!(p.wire_centroid().distance(want) < 1e-14);
+        let want = Point3::new((16.0 + 16.0 / 3.0) / 12.0, (8.0 + 32.0 / 3.0) / 12.0, 0.0);
+        assert!(p.area_centroid().unwrap().distance(want) < 1e-14);
+        // Reversed, the same centroid; open, none.
+        assert!(p.reversed().area_centroid().unwrap().distance(want) < 1e-14);
+        let open = Polyline::new(p.points()[..4].to_vec()).unwrap();
+        assert!(open.area_centroid().is_none());
     }
 
     #[test]

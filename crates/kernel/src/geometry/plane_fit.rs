@@ -69,7 +69,7 @@ impl Plane {
         // Points on a line spread in one direction only: no plane is determined. The variances
         // carry rounding errors of about 1e-16 of the largest, so a second spread below
         // [`LINE_SPREAD`] of the first counts as none.
-        if !(middle > (LINE_SPREAD * LINE_SPREAD) * largest) || largest <= 0.0 {
+        if middle.is_nan() || middle <= (LINE_SPREAD * LINE_SPREAD) * largest || largest <= 0.0 {
             return Err(Error::Collinear);
         }
         let z = oriented_normal(axis(order[2]));
@@ -130,16 +130,14 @@ fn symmetric_eigen(mut a: [[f64; 3]; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
             let t = if theta == 0.0 { 1.0 } else { t };
             let c = 1.0 / (t * t + 1.0).sqrt();
             let s = t * c;
-            for k in 0..3 {
-                let (akp, akq) = (a[k][p], a[k][q]);
-                a[k][p] = c * akp - s * akq;
-                a[k][q] = s * akp + c * akq;
+            for row in a.iter_mut() {
+                let (akp, akq) = (row[p], row[q]);
+                row[p] = c * akp - s * akq;
+                row[q] = s * akp + c * akq;
             }
-            for k in 0..3 {
-                let (apk, aqk) = (a[p][k], a[q][k]);
-                a[p][k] = c * apk - s * aqk;
-                a[q][k] = s * apk + c * aqk;
-            }
+            let (row_p, row_q) = (a[p], a[q]);
+            a[p] = std::array::from_fn(|k| c * row_p[k] - s * row_q[k]);
+            a[q] = std::array::from_fn(|k| s * row_p[k] + c * row_q[k]);
             for row in &mut v {
                 let (vkp, vkq) = (row[p], row[q]);
                 row[p] = c * vkp - s * vkq;

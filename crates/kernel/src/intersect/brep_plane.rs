@@ -403,7 +403,7 @@ pub fn contour_planes(
         return Ok(Vec::new());
     }
     let count = last - first + 1.0;
-    if !(count <= MAX_CONTOUR_PLANES as f64) {
+    if count.is_nan() || count > MAX_CONTOUR_PLANES as f64 {
         return Err(Error::InvalidInput(format!(
             "a contour distance of {distance} needs {count} planes across the shape, more than \
              {MAX_CONTOUR_PLANES}"

@@ -10,6 +10,7 @@
 
 pub(crate) mod bounding_box;
 pub(crate) mod closest_point;
+pub(crate) mod coons;
 pub(crate) mod curvature;
 pub(crate) mod derivatives;
 pub(crate) mod direction;
@@ -21,6 +22,7 @@ pub(crate) mod loft;
 pub(crate) mod normal;
 pub(crate) mod revolution;
 pub(crate) mod ruled;
+pub(crate) mod sweep;
 
 use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};
 use crate::surface::direction::SurfaceDirection;

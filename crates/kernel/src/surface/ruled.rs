@@ -99,6 +99,42 @@ impl NurbsSurface {
     }
 }
 
+impl NurbsSurface {
+    /// The bilinear patch on four corners (Rhino's `NurbsSurface.CreateFromCorners`,
+    /// Grasshopper's 4Point Surface): `S(u, v) = (1−u)(1−v) a + u(1−v) b + u v c + (1−u) v d`,
+    /// degree 1 both ways on `0..1`, so `a`, `b`, `c`, `d` sit at `(0,0)`, `(1,0)`, `(1,1)`,
+    /// `(0,1)`. With `d = c` the side from `d` to `c` collapses and the patch is the triangle
+    /// `a b c`.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for a non-finite corner; [`Error::Degenerate`] when the corners do
+    /// not span a surface (all on one line).
+    pub fn from_corners(a: Point3, b: Point3, c: Point3, d: Point3) -> Result<Self> {
+        if [a, b, c, d].iter().any(|p| !p.is_finite()) {
+            return Err(Error::NotFinite { what: "corner" });
+        }
+        let size = [b, c, d].iter().fold(0.0f64, |m, p| m.max(p.distance(a)));
+        let spans = (b - a)
+            .cross(d - a)
+            .length()
+            .max((c - b).cross(d - c).length())
+            .max((b - a).cross(c - a).length());
+        let least = crate::geometry::tolerance::ZERO_TOLERANCE * size * size;
+        if spans.is_nan() || spans <= least {
+            return Err(Error::Degenerate {
+                what: "four-point surface",
+            });
+        }
+        Self::non_rational(
+            1,
+            1,
+            vec![vec![a, d], vec![b, c]],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -130,6 +166,29 @@ mod tests {
             let pb = b.point_at(b.domain().parameter_at(s));
             assert!(pa.distance(pb) < 1e-12, "{s}: {pa:?} {pb:?}");
         }
+    }
+
+    #[test]
+    fn four_corners_make_a_bilinear_patch() {
+        let (a, b, c, d) = (
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(2.0, 0.0, 0.0),
+            Point3::new(2.0, 1.0, 1.0),
+            Point3::new(0.0, 1.0, 0.0),
+        );
+        let s = NurbsSurface::from_corners(a, b, c, d).unwrap();
+        assert_eq!(s.point_at(0.0, 0.0), a);
+        assert_eq!(s.point_at(1.0, 0.0), b);
+        assert_eq!(s.point_at(1.0, 1.0), c);
+        assert_eq!(s.point_at(0.0, 1.0), d);
+        // The centre is the average of the corners.
+        let centre = s.point_at(0.5, 0.5);
+        assert!(centre.distance(Point3::new(1.0, 0.5, 0.25)) < 1e-15);
+        // Three corners: the last side collapses.
+        let t = NurbsSurface::from_corners(a, b, c, c).unwrap();
+        assert!(t.is_singular(crate::SurfaceSide::North));
+        assert!(NurbsSurface::from_corners(a, a, a, a).is_err());
+        assert!(NurbsSurface::from_corners(a, b, Point3::new(4.0, 0.0, 0.0), b).is_err());
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! Curve › Division: Divide Curve, Divide Length and Shatter.
+//! Curve › Division: Divide Curve, Divide Length, Divide Distance and Shatter.
 
 use locus_kernel::{Curve, KINK_ANGLE_TOLERANCE, MAX_DIVISIONS};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve, Value};
@@ -11,10 +11,17 @@ pub const DIVIDE_CURVE: &str = "curve.divide_curve";
 pub const DIVIDE_LENGTH: &str = "curve.divide_length";
 /// Id of [`shatter`].
 pub const SHATTER: &str = "curve.shatter";
+/// Id of [`divide_distance`].
+pub const DIVIDE_DISTANCE: &str = "curve.divide_distance";
 
 /// Registers the division nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [divide_curve(), divide_length(), shatter()] {
+    for t in [
+        divide_curve(),
+        divide_length(),
+        shatter(),
+        divide_distance(),
+    ] {
         registry.register(t);
     }
 }
@@ -128,6 +135,32 @@ pub fn divide_length() -> NodeType {
         let curve = curve_input(s, 0)?;
         let length = finite_parameter(*s.item::<f64>(1)?, "L")?;
         let ts = curve.divide_by_length(length)?;
+        set_division(s, &curve, ts);
+        Ok(())
+    })
+}
+
+/// Divide Distance \[DivDist\]: points a fixed straight-line distance apart along a curve.
+pub fn divide_distance() -> NodeType {
+    division_outputs(
+        division(DIVIDE_DISTANCE, "Divide Distance", "DivDist").description(
+            "Divides a curve into points a fixed distance apart in straight lines (chords), \
+             from its start: each point is where the curve, going on from the previous one, \
+             first gets that far from it. The division stops where the rest of the curve \
+             stays closer than the distance, so the end is included only when it falls \
+             exactly on a step.",
+        ),
+    )
+    .gh_guid("1e531c08-9c80-46d6-8850-1b50d1dae69f")
+    .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to divide."))
+    .input(
+        Port::new("Distance", "D", DataType::Number)
+            .doc("Straight-line distance between points, positive."),
+    )
+    .solve(|s| {
+        let curve = curve_input(s, 0)?;
+        let distance = finite_parameter(*s.item::<f64>(1)?, "D")?;
+        let ts = curve.divide_equidistant(distance)?;
         set_division(s, &curve, ts);
         Ok(())
     })
@@ -363,5 +396,22 @@ mod tests {
             .input(DataTree::from_list(vec![0.0, 4.0]))
             .run();
         assert_eq!(*curves(&r.outputs[0])[0], rectangle());
+    }
+
+    #[test]
+    fn divide_distance_on_a_circle() {
+        let circle = Circle::new(Plane::WORLD_XY, 2.0).unwrap();
+        let r = NodeCall::new(&divide_distance())
+            .input(curve_tree(circle))
+            .input(DataTree::from_item(2.0))
+            .run();
+        let pts = points(&r.outputs[0]);
+        assert_eq!(pts.len(), 6);
+        assert!(close(pts[1], Point3::new(1.0, 3f64.sqrt(), 0.0), 1e-12));
+        let r = NodeCall::new(&divide_distance())
+            .input(curve_tree(circle))
+            .input(DataTree::from_item(-1.0))
+            .run();
+        assert_error(&r, "not positive");
     }
 }

@@ -14,9 +14,12 @@
 pub mod analysis;
 pub mod division;
 pub mod edit;
+pub mod extend;
+pub mod frames;
 pub mod primitive;
 pub mod primitive_more;
 pub mod primitive_rect;
+pub mod regions;
 pub mod spline;
 pub mod util;
 
@@ -34,6 +37,9 @@ pub fn register(registry: &mut NodeRegistry) {
     primitive_more::register(registry);
     primitive_rect::register(registry);
     edit::register(registry);
+    frames::register(registry);
+    extend::register(registry);
+    regions::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve

@@ -14,13 +14,21 @@
 //! interpolating surface passes through the same points but may differ between them.
 
 use locus_kernel::basis::{MAX_ORDER, basis_functions, span_index};
-use locus_kernel::{NurbsSurface, Point3};
+use locus_kernel::{Brep, NurbsSurface, Point3};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
 
-use crate::curve::point_list;
+use crate::curve::{curve_input, point_list};
 
 /// Id of [`surface_from_points`].
 pub const SURFACE_FROM_POINTS: &str = "surface.surface_from_points";
+/// Id of [`four_point_surface`].
+pub const FOUR_POINT_SURFACE: &str = "surface.four_point_surface";
+/// Id of [`edge_surface`].
+pub const EDGE_SURFACE: &str = "surface.edge_surface";
+
+/// The distance within which Edge Surface chains its curves: 0.001 model units, Rhino's
+/// default document tolerance.
+pub const EDGE_CHAIN_TOLERANCE: f64 = 0.001;
 
 /// The degree Surface From Points uses where there are enough points.
 const PREFERRED_DEGREE: usize = 3;
@@ -28,6 +36,86 @@ const PREFERRED_DEGREE: usize = 3;
 /// Registers the freeform nodes.
 pub fn register(registry: &mut NodeRegistry) {
     registry.register(surface_from_points());
+    registry.register(four_point_surface());
+    registry.register(edge_surface());
+}
+
+/// Edge Surface \[EdgeSrf\]: the Coons patch of two, three or four edge curves.
+pub fn edge_surface() -> NodeType {
+    let edge = |name: &str, nick: &str, doc: &str| Port::new(name, nick, DataType::Curve).doc(doc);
+    NodeType::new(EDGE_SURFACE, "Edge Surface", "EdgeSrf", "Surface")
+        .gh_guid("36132830-e2ef-4476-8ea1-6a43922344f0")
+        .subcategory("Freeform")
+        .description(
+            "Creates a surface from two, three or four edge curves that form a closed loop \
+             (in any order and direction; ends meeting within 0.001): the bilinearly blended \
+             Coons patch, which passes exactly through every edge, as a one-face B-rep. With \
+             three curves one side collapses to a point, with two curves two sides do. The \
+             degrees and knots are the edges' (opposite edges made compatible); u runs along \
+             curve A, both directions on 0 to 1. Rational edges (arcs) need equal end weights, \
+             as Rhino's arcs have.",
+        )
+        .input(edge("Curve A", "A", "First edge curve."))
+        .input(edge("Curve B", "B", "Second edge curve."))
+        .input(edge("Curve C", "C", "Optional third edge curve.").optional())
+        .input(edge("Curve D", "D", "Optional fourth edge curve.").optional())
+        .output(
+            Port::new("Surface", "S", DataType::Brep).doc("The edge surface, a one-face B-rep."),
+        )
+        .solve(|s| {
+            let mut edges = vec![curve_input(s, 0)?.to_nurbs(), curve_input(s, 1)?.to_nurbs()];
+            for input in [2, 3] {
+                if s.value(input).is_some() {
+                    edges.push(curve_input(s, input)?.to_nurbs());
+                }
+            }
+            let surface = NurbsSurface::from_edges(&edges, EDGE_CHAIN_TOLERANCE)?;
+            s.set(0, Shared::new(Brep::from_surface(surface)?));
+            Ok(())
+        })
+}
+
+/// 4Point Surface \[Srf4Pt\]: the bilinear patch on three or four corners.
+pub fn four_point_surface() -> NodeType {
+    let corner =
+        |name: &str, nick: &str, doc: &str| Port::new(name, nick, DataType::Point).doc(doc);
+    NodeType::new(FOUR_POINT_SURFACE, "4Point Surface", "Srf4Pt", "Surface")
+        .gh_guid("c77a8b3b-c569-4d81-9b59-1c27299a1c45")
+        .subcategory("Freeform")
+        .description(
+            "Creates the bilinear surface on three or four corner points (Rhino's \
+             CreateFromCorners): degree 1 both ways on 0 to 1, A at (0, 0), B at (1, 0), C at \
+             (1, 1) and D at (0, 1), straight along every isocurve. Four corners out of one \
+             plane give a twisted patch (a hyperbolic paraboloid). Without D the fourth corner \
+             is C: the side from C to D collapses and the surface is the triangle A B C. \
+             Corners on one line are an error.",
+        )
+        .input(corner("Corner A", "A", "First corner, at (0, 0)."))
+        .input(corner("Corner B", "B", "Second corner, at (1, 0)."))
+        .input(corner("Corner C", "C", "Third corner, at (1, 1)."))
+        .input(
+            corner(
+                "Corner D",
+                "D",
+                "Optional fourth corner, at (0, 1); C when absent.",
+            )
+            .optional(),
+        )
+        .output(Port::new("Surface", "S", DataType::Surface).doc("The bilinear surface."))
+        .solve(|s| {
+            let a = *s.item::<Point3>(0)?;
+            let b = *s.item::<Point3>(1)?;
+            let c = *s.item::<Point3>(2)?;
+            let d = s.item_opt::<Point3>(3).copied().unwrap_or(c);
+            let surface = NurbsSurface::from_corners(a, b, c, d).map_err(|e| match e {
+                locus_kernel::Error::Degenerate { .. } => {
+                    NodeError::from("the corners lie on one line and span no surface")
+                }
+                other => other.into(),
+            })?;
+            s.set(0, Shared::new(surface));
+            Ok(())
+        })
 }
 
 /// Surface From Points \[SrfGrid\]: a NURBS surface from a grid of points.
@@ -386,5 +474,91 @@ mod tests {
                 .flatten()
                 .is_some()
         );
+    }
+
+    fn corners(points: &[Point3]) -> NodeCallResult {
+        let node = four_point_surface();
+        let mut call = NodeCall::new(&node);
+        for p in points {
+            call = call.input(DataTree::from_item(*p));
+        }
+        call.run()
+    }
+
+    #[test]
+    fn four_point_surface_on_a_rectangle_and_a_triangle() {
+        let (a, b, c, d) = (
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(3.0, 0.0, 0.0),
+            Point3::new(3.0, 2.0, 0.0),
+            Point3::new(0.0, 2.0, 0.0),
+        );
+        let r = corners(&[a, b, c, d]);
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let Some(Value::Surface(s)) = r.outputs[0].values().next().flatten() else {
+            panic!("no surface")
+        };
+        assert!((s.area_properties().unwrap().area - 6.0).abs() < 1e-12);
+        assert_eq!(s.point_at(1.0, 1.0), c);
+        // Without D: the triangle A B C of area 3.
+        let r = corners(&[a, b, c]);
+        let Some(Value::Surface(t)) = r.outputs[0].values().next().flatten() else {
+            panic!("no surface: {:?}", r.messages)
+        };
+        assert!((t.area_properties().unwrap().area - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn four_point_surface_bad_input() {
+        let p = |x: f64| Point3::new(x, 0.0, 0.0);
+        let r = corners(&[p(0.0), p(1.0), p(2.0), p(3.0)]);
+        let e: Vec<&str> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .map(|m| m.text.as_str())
+            .collect();
+        assert!(e.len() == 1 && e[0].contains("one line"), "{e:?}");
+        let r = corners(&[p(0.0), Point3::new(f64::NAN, 0.0, 0.0), p(2.0)]);
+        assert!(
+            r.messages.iter().any(|m| m.level == Level::Error),
+            "{:?}",
+            r.messages
+        );
+    }
+
+    #[test]
+    fn edge_surface_of_four_lines() {
+        let line =
+            |a: Point3, b: Point3| DataTree::from_item(Value::Line(locus_kernel::Line::new(a, b)));
+        let (a, b, c, d) = (
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(3.0, 0.0, 0.0),
+            Point3::new(3.0, 2.0, 0.0),
+            Point3::new(0.0, 2.0, 0.0),
+        );
+        let r = NodeCall::new(&edge_surface())
+            .input(line(a, b))
+            .input(line(b, c))
+            .input(line(c, d))
+            .input(line(d, a))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let Some(Value::Brep(brep)) = r.outputs[0].values().next().flatten() else {
+            panic!("no brep")
+        };
+        assert!((brep.area().unwrap() - 6.0).abs() < 1e-12);
+        // Two curves that do not close are an error naming the chain.
+        let r = NodeCall::new(&edge_surface())
+            .input(line(a, b))
+            .input(line(c, d))
+            .run();
+        let e: Vec<&str> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .map(|m| m.text.as_str())
+            .collect();
+        assert!(e.len() == 1 && e[0].contains("chain"), "{e:?}");
     }
 }

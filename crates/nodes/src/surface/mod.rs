@@ -13,7 +13,9 @@ pub mod extrusion;
 pub mod freeform;
 pub mod lofting;
 pub mod primitive;
+pub mod sweeping;
 pub mod util;
+pub mod wireframe;
 
 use locus_runtime::NodeRegistry;
 
@@ -23,6 +25,7 @@ pub fn register(registry: &mut NodeRegistry) {
     freeform::register(registry);
     extrusion::register(registry);
     lofting::register(registry);
+    sweeping::register(registry);
     boundary::register(registry);
     analysis::register(registry);
     util::register(registry);
@@ -31,4 +34,5 @@ pub fn register(registry: &mut NodeRegistry) {
     brep::register(registry);
     brep_analysis::register(registry);
     box_corners::register(registry);
+    wireframe::register(registry);
 }

@@ -133,6 +133,34 @@ impl NurbsCurve {
     }
 }
 
+impl NurbsCurve {
+    /// The curve between `a` and `b` at `factor` (Rhino's tween curves, Grasshopper's Tween
+    /// Curve): the two made compatible ([`NurbsCurve::make_compatible`], domain `0..1`) and
+    /// every homogeneous control point blended, `(1 − f) A + f B`, so that the factor 0 gives
+    /// `a` and 1 gives `b` (as shapes). Factors outside `0..1` extrapolate.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for a non-finite factor; [`Error::InvalidWeight`] when the blended
+    /// weights are not positive (far extrapolation of rational curves); the errors of
+    /// [`NurbsCurve::make_compatible`].
+    pub fn tween(a: &NurbsCurve, b: &NurbsCurve, factor: f64) -> Result<Self> {
+        if !factor.is_finite() {
+            return Err(Error::NotFinite { what: "factor" });
+        }
+        let curves = Self::make_compatible(&[a.clone(), b.clone()])?;
+        let (ha, hb) = (
+            curves[0].homogeneous_points(),
+            curves[1].homogeneous_points(),
+        );
+        let blended: Vec<[f64; 4]> = ha
+            .iter()
+            .zip(&hb)
+            .map(|(p, q)| std::array::from_fn(|k| (1.0 - factor) * p[k] + factor * q[k]))
+            .collect();
+        Self::from_homogeneous(curves[0].degree(), &blended, curves[0].knots().to_vec())
+    }
+}
+
 /// Solves the banded collocation system `Σⱼ Nⱼ(ξᵢ) xⱼ = rhsᵢ` for homogeneous points, by
 /// Gaussian elimination without pivoting in band storage.
 pub(crate) fn solve_collocation(
@@ -279,5 +307,46 @@ mod tests {
             same_shape(a, b, 1e-12);
         }
         assert!(NurbsCurve::make_compatible(&[]).is_err());
+    }
+
+    #[test]
+    fn tweens_blend_between_two_curves() {
+        let a = NurbsCurve::create(
+            &[
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 1.0, 0.0),
+                Point3::new(2.0, 0.0, 0.0),
+            ],
+            2,
+            false,
+        )
+        .unwrap();
+        let b = NurbsCurve::create(
+            &[
+                Point3::new(0.0, 0.0, 2.0),
+                Point3::new(1.0, 0.0, 2.0),
+                Point3::new(2.0, 0.0, 2.0),
+                Point3::new(3.0, 0.0, 2.0),
+            ],
+            3,
+            false,
+        )
+        .unwrap();
+        let half = NurbsCurve::tween(&a, &b, 0.5).unwrap();
+        // Ends and the point at every normalized parameter are the averages.
+        for k in 0..=10 {
+            let s = f64::from(k) / 10.0;
+            let pa = a.point_at(a.domain().parameter_at(s));
+            let pb = b.point_at(b.domain().parameter_at(s));
+            let mid = Point3::from_vector((pa.to_vector() + pb.to_vector()) * 0.5);
+            assert!(half.point_at(s).distance(mid) < 1e-12, "{s}");
+        }
+        let zero = NurbsCurve::tween(&a, &b, 0.0).unwrap();
+        assert!(
+            zero.point_at(0.3)
+                .distance(a.point_at(a.domain().parameter_at(0.3)))
+                < 1e-12
+        );
+        assert!(NurbsCurve::tween(&a, &b, f64::NAN).is_err());
     }
 }
