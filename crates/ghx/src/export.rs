@@ -77,7 +77,7 @@ impl Out {
 
     fn text_element(&mut self, name: &str, text: &str) {
         self.start(name, &[]);
-        let _ = self.w.write_event(Event::Text(BytesText::new(text)));
+        let _ = self.w.write_event(Event::Text(xml_text(text)));
         self.end(name);
     }
 
@@ -96,7 +96,7 @@ impl Out {
 
     fn item(&mut self, name: &str, index: Option<usize>, code: u32, text: &str) {
         self.item_start(name, index, code);
-        let _ = self.w.write_event(Event::Text(BytesText::new(text)));
+        let _ = self.w.write_event(Event::Text(xml_text(text)));
         self.end("item");
     }
 
@@ -871,4 +871,11 @@ fn write_persistent(o: &mut Out, branches: &[(String, Vec<ItemXml>)]) {
         },
     );
     o.end("chunk");
+}
+
+/// Text content escaped for XML, with carriage returns as character references: a reader
+/// normalises a literal `\r\n` to `\n` (XML 1.0 §2.11), which would change a script's code.
+fn xml_text(text: &str) -> BytesText<'static> {
+    let escaped = quick_xml::escape::escape(text).replace('\r', "&#xD;");
+    BytesText::from_escaped(escaped)
 }

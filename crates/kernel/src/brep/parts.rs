@@ -82,7 +82,12 @@ impl Brep {
                         trim.loop_index
                     ));
                 }
-                let next = &trims[l.trims[(k + 1) % l.trims.len()]];
+                let next_index = l.trims[(k + 1) % l.trims.len()];
+                let Some(next) = trims.get(next_index) else {
+                    return bad(format!(
+                        "loop {i} refers to trim {next_index} past the last"
+                    ));
+                };
                 if trim.vertices[1] != next.vertices[0] {
                     return bad(format!(
                         "loop {i} is not closed: trim {t} ends at vertex {}, the next trim starts at {}",

@@ -98,7 +98,8 @@ impl Curve {
     ///
     /// # Errors
     /// [`Error::NotFinite`] for a tolerance that is not finite and positive,
-    /// [`Error::InvalidInput`] for a curve without a valid NURBS form.
+    /// [`Error::InvalidInput`] for a curve without a valid NURBS form, [`Error::Degenerate`] for
+    /// a curve collapsed to a point (all control points within `tolerance`).
     ///
     /// # Examples
     /// ```
@@ -111,8 +112,8 @@ impl Curve {
     /// ```
     pub fn intersect_curve(&self, other: &Self, tolerance: f64) -> Result<CurveCurveIntersections> {
         check_tolerance(tolerance)?;
-        let a = nurbs_form(self)?;
-        let b = nurbs_form(other)?;
+        let a = nurbs_form(self, tolerance)?;
+        let b = nurbs_form(other, tolerance)?;
         let pieces_a = Piece::all(&a);
         let pieces_b = Piece::all(&b);
         let mut raw = Raw::default();
@@ -152,13 +153,21 @@ pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
     }
 }
 
-/// The NURBS form that the searches run on, checked.
-pub(crate) fn nurbs_form(curve: &Curve) -> Result<NurbsCurve> {
+/// The NURBS form that the searches run on, checked: valid, and not collapsed to a point
+/// (all control points within `tolerance` of the first), where every piece would meet every
+/// other and the search would never end.
+pub(crate) fn nurbs_form(curve: &Curve, tolerance: f64) -> Result<NurbsCurve> {
     let nurbs = curve.to_nurbs();
     if !nurbs.is_valid() {
         return Err(Error::InvalidInput(
             "the curve has no valid NURBS form".into(),
         ));
+    }
+    let points = nurbs.points();
+    if points.iter().all(|p| p.distance(points[0]) <= tolerance) {
+        return Err(Error::Degenerate {
+            what: "curve (all its control points coincide)",
+        });
     }
     Ok(nurbs)
 }
@@ -460,6 +469,28 @@ mod tests {
 
     fn p(x: f64, y: f64, z: f64) -> Point3 {
         Point3::new(x, y, z)
+    }
+
+    #[test]
+    fn a_curve_collapsed_to_a_point_is_an_error_not_an_endless_search() {
+        let p = Point3::new(1.0, 2.0, 3.0);
+        let c: Curve =
+            NurbsCurve::new_non_rational(3, vec![p; 4], vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0])
+                .unwrap()
+                .into();
+        let line: Curve = Line::new(Point3::new(0.0, 0.0, 0.0), Point3::new(2.0, 4.0, 6.0)).into();
+        assert!(matches!(
+            c.self_intersections(1e-9),
+            Err(Error::Degenerate { .. })
+        ));
+        assert!(matches!(
+            c.intersect_curve(&line, 1e-9),
+            Err(Error::Degenerate { .. })
+        ));
+        assert!(matches!(
+            line.intersect_curve(&c, 1e-9),
+            Err(Error::Degenerate { .. })
+        ));
     }
 
     #[test]

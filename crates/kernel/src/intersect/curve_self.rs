@@ -53,7 +53,7 @@ impl Curve {
     /// ```
     pub fn self_intersections(&self, tolerance: f64) -> Result<CurveCurveIntersections> {
         check_tolerance(tolerance)?;
-        let nurbs = nurbs_form(self)?;
+        let nurbs = nurbs_form(self, tolerance)?;
         let mut pieces = Vec::new();
         for span in Piece::all(&nurbs) {
             monotone_pieces(span, 0, &mut pieces);

@@ -100,6 +100,7 @@ impl Transform {
     }
 
     /// The translation by `v`: `[[1,0,0,x],[0,1,0,y],[0,0,1,z],[0,0,0,1]]`.
+    #[inline]
     pub fn translation(v: Vector3) -> Self {
         Self {
             matrix: DMat4::from_translation(v.to_dvec3()),
@@ -207,6 +208,7 @@ impl Transform {
     }
 
     /// Whether every entry is finite.
+    #[inline]
     pub fn is_finite(&self) -> bool {
         self.matrix.is_finite()
     }

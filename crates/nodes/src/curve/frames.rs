@@ -83,9 +83,9 @@ fn frames_outputs(node: NodeType) -> NodeType {
     )
 }
 
-/// Curve Frame \[CFrame\]: the curvature frame at a parameter.
+/// Curve Frame \[Frame\]: the curvature frame at a parameter.
 pub fn curve_frame() -> NodeType {
-    NodeType::new(CURVE_FRAME, "Curve Frame", "CFrame", "Curve")
+    NodeType::new(CURVE_FRAME, "Curve Frame", "Frame", "Curve")
         .subcategory("Analysis")
         .gh_guid("6b2a5853-07aa-4329-ba84-0a5d46b51dbd")
         .description(

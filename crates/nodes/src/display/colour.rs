@@ -34,6 +34,7 @@ fn channel_port(name: &str, nick: &str, default: f64, doc: &str) -> Port {
 /// Colour RGB \[RGB\]: a colour from alpha, red, green and blue.
 pub fn colour_rgb() -> NodeType {
     NodeType::new(COLOUR_RGB, "Colour RGB", "RGB", "Display")
+        .gh_guid("49d2e200-b34e-4e1c-82a3-07feb4cb9378")
         .subcategory("Colour")
         .description(
             "Creates a colour from alpha, red, green and blue channels, each 0 to 255 \
@@ -62,6 +63,7 @@ pub fn colour_rgb() -> NodeType {
 /// Split ARGB \[ARGB\]: the channels of a colour.
 pub fn split_argb() -> NodeType {
     NodeType::new(SPLIT_ARGB, "Split ARGB", "ARGB", "Display")
+        .gh_guid("350f7d03-a48f-4121-bcee-328cfe1ed9ef")
         .subcategory("Colour")
         .description("Splits a colour into its alpha, red, green and blue channels (0 to 255).")
         .input(Port::new("Colour", "C", DataType::Colour).doc("The colour to split."))

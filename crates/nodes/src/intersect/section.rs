@@ -90,7 +90,14 @@ fn shape_input(s: &Solve<'_>) -> Result<Shape, NodeError> {
         return Ok(Shape::Mesh(m.clone()));
     }
     match cast_value(&value, DataType::Brep) {
-        Ok(Value::Brep(_)) => Ok(Shape::Brep(brep_item(s, 0)?)),
+        Ok(Value::Brep(brep)) => {
+            let finite = brep.vertices().iter().all(|v| v.point.is_finite())
+                && brep.faces().iter().all(|f| f.surface.is_finite());
+            if !finite {
+                return Err("the brep S has a coordinate that is not finite".into());
+            }
+            Ok(Shape::Brep(brep))
+        }
         _ => Err(NodeError(format!(
             "shape S must be a brep, surface, box or mesh, not a {}",
             value.data_type().name().to_lowercase()

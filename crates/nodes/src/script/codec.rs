@@ -628,13 +628,13 @@ mod tests {
         .unwrap();
         let sphere =
             Brep::from_sphere(&Sphere::new(Point3::new(0.0, 0.0, 1.0), 1.5).unwrap()).unwrap();
-        let cube = Brep::from_box(&OrientedBox::new(
+        let box_ = OrientedBox::new(
             plane,
             Interval::new(0.0, 1.0),
             Interval::new(-1.0, 2.0),
             Interval::new(0.5, 0.75),
-        ))
-        .unwrap();
+        );
+        let cube = Brep::from_box(&box_).unwrap();
         let mesh = Mesh::new(
             vec![
                 Point3::new(0.0, 0.0, 0.0),
@@ -678,6 +678,7 @@ mod tests {
             Value::Surface(Shared::new(sphere.faces()[0].surface.clone())),
             Value::Brep(Shared::new(sphere)),
             Value::Brep(Shared::new(cube)),
+            Value::Box(box_),
             Value::Mesh(Shared::new(mesh)),
             Value::Colour(Color {
                 r: 1,
