@@ -45,7 +45,9 @@ impl Bytes<'_> {
 
 /// A small literal of a type: a few awkward numbers, small counts, degenerate geometry.
 fn literal(data_type: DataType, b: &mut Bytes) -> Option<String> {
-    let numbers = ["0", "1", "-1", "0.5", "3", "-2.5", "1e-12", "NaN", "inf", "7"];
+    let numbers = [
+        "0", "1", "-1", "0.5", "3", "-2.5", "1e-12", "NaN", "inf", "7",
+    ];
     let n = |b: &mut Bytes| b.pick(&numbers).to_string();
     let point = |b: &mut Bytes| format!("({}, {}, {})", n(b), n(b), n(b));
     let one = |b: &mut Bytes| -> Option<String> {
@@ -53,7 +55,9 @@ fn literal(data_type: DataType, b: &mut Bytes) -> Option<String> {
             DataType::Number => n(b),
             DataType::Integer => b.pick(&["0", "1", "2", "-1", "5"]).to_string(),
             DataType::Boolean => b.pick(&["true", "false"]).to_string(),
-            DataType::Text => b.pick(&["\"\"", "\"a\"", "\"{0;1}\"", "\"x+1\""]).to_string(),
+            DataType::Text => b
+                .pick(&["\"\"", "\"a\"", "\"{0;1}\"", "\"x+1\""])
+                .to_string(),
             DataType::Point | DataType::Vector => point(b),
             DataType::Domain => format!("({}, {})", n(b), n(b)),
             DataType::Plane => b.pick(&["XY", "YZ", "XZ", "ZX"]).to_string(),
@@ -74,7 +78,11 @@ fn literal(data_type: DataType, b: &mut Bytes) -> Option<String> {
             let items: Option<Vec<String>> = (0..b.byte() % 4 + 1).map(|_| one(b)).collect();
             Some(format!("[{}]", items?.join(", ")))
         }
-        _ => Some(format!("{{\"{{0;1}}\": [{}], \"{{1}}\": [{}]}}", one(b)?, one(b)?)),
+        _ => Some(format!(
+            "{{\"{{0;1}}\": [{}], \"{{1}}\": [{}]}}",
+            one(b)?,
+            one(b)?
+        )),
     }
 }
 

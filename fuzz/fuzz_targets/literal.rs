@@ -20,9 +20,9 @@ fuzz_target!(|data: &[u8]| {
     let Ok(written) = Literal::from_tree(&tree) else {
         return; // a type without a literal form (B-reps, meshes)
     };
-    let again = written
-        .parse(data_type)
-        .unwrap_or_else(|e| panic!("{text:?} as {data_type:?} writes {written} which does not read: {e}"));
+    let again = written.parse(data_type).unwrap_or_else(|e| {
+        panic!("{text:?} as {data_type:?} writes {written} which does not read: {e}")
+    });
     let differences = compare_trees(&again, &tree, COMPARE_TOLERANCE, 3);
     assert!(
         differences.is_empty(),

@@ -18,6 +18,9 @@ fuzz_target!(|data: &[u8]| {
     let written = graph.to_ron();
     let again = Graph::from_ron(&written)
         .unwrap_or_else(|e| panic!("the canonical form does not read: {e:?}\n{written}"));
-    assert_eq!(&again, graph, "the canonical form reads as another graph:\n{written}");
+    assert_eq!(
+        &again, graph,
+        "the canonical form reads as another graph:\n{written}"
+    );
     assert_eq!(again.to_ron(), written, "the canonical form is not stable");
 });

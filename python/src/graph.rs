@@ -40,7 +40,8 @@ pub(crate) fn registry() -> &'static NodeRegistry {
     REGISTRY.get_or_init(|| {
         let mut registry = NodeRegistry::new();
         locus_nodes::register(&mut registry);
-        let from_env = std::env::var_os(locus_nodes::script::PYTHON_ENV).is_some_and(|p| !p.is_empty());
+        let from_env =
+            std::env::var_os(locus_nodes::script::PYTHON_ENV).is_some_and(|p| !p.is_empty());
         let config = match INTERPRETER.get() {
             Some(exe) if !exe.is_empty() && !from_env => {
                 locus_nodes::script::PythonConfig::Interpreter(exe.into())

@@ -64,7 +64,11 @@ fn _locus(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(script::_script_fatal, m)?)?;
     m.add_function(wrap_pyfunction!(script::_script_read_request, m)?)?;
     m.add_function(wrap_pyfunction!(script::_script_done, m)?)?;
-    let executable: String = py.import("sys")?.getattr("executable")?.extract().unwrap_or_default();
+    let executable: String = py
+        .import("sys")?
+        .getattr("executable")?
+        .extract()
+        .unwrap_or_default();
     graph::set_interpreter(executable);
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

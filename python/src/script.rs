@@ -128,7 +128,11 @@ fn output_data(obj: &Bound<'_, PyAny>, output: &str) -> PyResult<OutputData> {
             tree_from_py(&value, DataType::Generic)
                 .map_err(|e| PyTypeError::new_err(format!("output {output}: {}", e.0)))?,
         ),
-        other => return Err(PyValueError::new_err(format!("unknown output kind {other:?}"))),
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "unknown output kind {other:?}"
+            )));
+        }
     })
 }
 
@@ -147,7 +151,12 @@ pub(crate) fn _script_done<'py>(
 ) -> PyResult<Bound<'py, PyBytes>> {
     let outputs = outputs
         .iter()
-        .zip(names.iter().map(String::as_str).chain(std::iter::repeat("?")))
+        .zip(
+            names
+                .iter()
+                .map(String::as_str)
+                .chain(std::iter::repeat("?")),
+        )
         .map(|(o, name)| output_data(o, name))
         .collect::<PyResult<Vec<_>>>()?;
     let messages = messages
@@ -261,7 +270,10 @@ pub(crate) fn call<'py>(
         .map(|tree| tree_to_py(py, tree))
         .collect::<PyResult<Vec<_>>>()?;
     if outputs.len() == 1 {
-        return Ok(outputs.into_iter().next().unwrap_or_else(|| py.None().into_bound(py)));
+        return Ok(outputs
+            .into_iter()
+            .next()
+            .unwrap_or_else(|| py.None().into_bound(py)));
     }
     Ok(PyTuple::new(py, outputs)?.into_any())
 }
