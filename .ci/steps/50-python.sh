@@ -31,3 +31,9 @@ wheel=$(ls target/python-wheels/locus-*-cp39-abi3-*.whl)
 # the source package (without its compiled _locus) would shadow the installed wheel.
 cd python/tests
 "$py" -m pytest -q -p no:cacheprovider .
+
+# The graphs with Python script nodes (graphs/python/), now that a Python with the package is at
+# hand: tests/graphs.rs requires them to pass (LOCUS_REQUIRE_PYTHON=1) and tests/cli.rs runs
+# them through `locus test`.
+cd ../..
+LOCUS_PYTHON="$py" LOCUS_REQUIRE_PYTHON=1 cargo test --test graphs --test cli
