@@ -194,3 +194,88 @@ fn large_lifted_branches_agree_on_one_and_two_threads() {
         assert_eq!(results[0], results[3]);
     }
 }
+
+/// An item function with two outputs that warns above 6 and fails above 8, for
+/// `lift2_with_plain` against `lift2_with`.
+fn sum_and_order(
+    a: &f64,
+    b: &f64,
+    report: &mut locus_runtime::ItemReport,
+) -> Result<(f64, bool), NodeError> {
+    if a + b > 6.0 {
+        report.warning(format!("sum {} is large", a + b));
+    }
+    add(a, b).map(|s| (s, a > b))
+}
+
+fn two_outputs(id: &str, optional_b: bool) -> NodeType {
+    ports(id, optional_b).output(Port::new("Larger", "L", DataType::Boolean))
+}
+
+proptest! {
+    #[test]
+    fn the_plain_loop_agrees_with_the_reporting_loop(
+        a in branches(),
+        b in branches(),
+        m in matching(),
+        optional_b: bool,
+    ) {
+        let (ta, tb) = (tree(&a), tree(&b));
+        let plain = two_outputs("test.plain", optional_b).lift2_with_plain(
+            |a: &f64, b: &f64| a + b <= 6.0,
+            |a: &f64, b: &f64| (a + b, a > b),
+            sum_and_order,
+        );
+        let reporting = two_outputs("test.reporting", optional_b).lift2_with(sum_and_order);
+        let run = |node: &NodeType| {
+            let r = NodeCall::new(node).input(ta.clone()).input(tb.clone()).matching(m).run();
+            let messages: Vec<String> = r
+                .messages
+                .iter()
+                .map(|m| format!("{:?} {:?} {:?} {}", m.level, m.path, m.index, m.text))
+                .collect();
+            (r.outputs, messages)
+        };
+        prop_assert_eq!(run(&plain), run(&reporting));
+    }
+}
+
+proptest! {
+    #[test]
+    fn the_plain_loop_of_three_inputs_agrees_with_the_reporting_loop(
+        a in branches(),
+        b in branches(),
+        c in branches(),
+        m in matching(),
+    ) {
+        let three = |id: &str| {
+            NodeType::new(id, "Sum3", "S3", "Test")
+                .input(Port::new("A", "A", DataType::Number))
+                .input(Port::new("B", "B", DataType::Number))
+                .input(Port::new("C", "C", DataType::Number))
+                .output(Port::new("Sum", "S", DataType::Number))
+                .output(Port::new("Larger", "L", DataType::Boolean))
+        };
+        let f = |a: &f64, b: &f64, c: &f64, r: &mut locus_runtime::ItemReport| {
+            sum_and_order(&(a + c), b, r)
+        };
+        let plain = three("test.sum3").lift3_with_plain(
+            |a: &f64, b: &f64, c: &f64| a + c + b <= 6.0,
+            |a: &f64, b: &f64, c: &f64| (a + c + b, a + c > *b),
+            f,
+        );
+        let reporting = three("test.sum3").lift3_with(f);
+        let (ta, tb, tc) = (tree(&a), tree(&b), tree(&c));
+        let run = |node: &NodeType| {
+            let r = NodeCall::new(node)
+                .input(ta.clone())
+                .input(tb.clone())
+                .input(tc.clone())
+                .matching(m)
+                .run();
+            let messages: Vec<String> = r.messages.iter().map(|m| m.to_string()).collect();
+            (r.outputs, messages)
+        };
+        prop_assert_eq!(run(&plain), run(&reporting));
+    }
+}

@@ -38,7 +38,11 @@ pub fn larger_than() -> NodeType {
     .gh_guid("30d58600-1aab-42db-80a3-f1ea6c4269a0")
     .output(Port::new("Larger than", ">", DataType::Boolean).doc("True if A > B."))
     .output(Port::new("… or Equal to", ">=", DataType::Boolean).doc("True if A ≥ B."))
-    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a > b, a >= b))))
+    .lift2_with_plain(
+        neither_nan,
+        |&a: &f64, &b: &f64| (a > b, a >= b),
+        |a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a > b, a >= b))),
+    )
 }
 
 /// Smaller Than \[Smaller\]: `A < B` and `A <= B`.
@@ -52,7 +56,11 @@ pub fn smaller_than() -> NodeType {
     .gh_guid("ae840986-cade-4e5a-96b0-570f007d4fc0")
     .output(Port::new("Smaller than", "<", DataType::Boolean).doc("True if A < B."))
     .output(Port::new("… or Equal to", "<=", DataType::Boolean).doc("True if A ≤ B."))
-    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a < b, a <= b))))
+    .lift2_with_plain(
+        neither_nan,
+        |&a: &f64, &b: &f64| (a < b, a <= b),
+        |a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a < b, a <= b))),
+    )
 }
 
 /// Equality \[Equals\]: `A = B` and `A ≠ B`.
@@ -66,7 +74,18 @@ pub fn equality() -> NodeType {
     .gh_guid("5db0fb89-4f22-4f09-a777-fa5e55aed7ec")
     .output(Port::new("Equality", "=", DataType::Boolean).doc("True if A = B exactly."))
     .output(Port::new("Inequality", "≠", DataType::Boolean).doc("True if A ≠ B."))
-    .lift2_with(|a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a == b, a != b))))
+    .lift2_with_plain(
+        neither_nan,
+        |&a: &f64, &b: &f64| (a == b, a != b),
+        |a: &f64, b: &f64, report| Ok(compare(*a, *b, report, |a, b| (a == b, a != b))),
+    )
+}
+
+/// Whether neither input is NaN: then a comparison reports nothing, and its items take the
+/// lifted loop's branch-free path.
+#[inline(always)]
+fn neither_nan(a: &f64, b: &f64) -> bool {
+    !a.is_nan() & !b.is_nan()
 }
 
 /// The two results of a comparison, with a warning when an input is NaN.

@@ -5,7 +5,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use locus_kernel::{Point3, Vector3};
-use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+use locus_runtime::{DataType, ItemReport, NodeError, NodeRegistry, NodeType, Port};
 
 use super::{finite_number, finite_point, finite_vector, unit, warn_unless_finite};
 
@@ -170,21 +170,37 @@ pub fn vector_2pt() -> NodeType {
             Port::new("Length", "L", DataType::Number)
                 .doc("The distance from A to B (the length before unitizing), in model units."),
         )
-        .lift3_with(|a: &Point3, b: &Point3, unitize: &bool, report| {
-            let a = finite_point(*a, "point A")?;
-            let b = finite_point(*b, "point B")?;
-            let v = b - a;
-            let vector = if *unitize {
-                // The length is still given when the vector has no direction.
-                unit(v, "the vector from A to B").unwrap_or_else(|e| {
-                    report.error(0, e.0);
-                    Vector3::ZERO
-                })
-            } else {
-                v
-            };
-            Ok((vector, v.length()))
+        .lift3_with_plain(
+            // Finite points, not unitized: the vector and its length, nothing to report.
+            |a: &Point3, b: &Point3, unitize: &bool| !*unitize & a.is_finite() & b.is_finite(),
+            |&a: &Point3, &b: &Point3, _: &bool| {
+                let v = b - a;
+                (v, v.length())
+            },
+            vector_2pt_item,
+        )
+}
+
+/// One item of Vector 2Pt, with its checks and reports.
+fn vector_2pt_item(
+    a: &Point3,
+    b: &Point3,
+    unitize: &bool,
+    report: &mut ItemReport,
+) -> Result<(Vector3, f64), NodeError> {
+    let a = finite_point(*a, "point A")?;
+    let b = finite_point(*b, "point B")?;
+    let v = b - a;
+    let vector = if *unitize {
+        // The length is still given when the vector has no direction.
+        unit(v, "the vector from A to B").unwrap_or_else(|e| {
+            report.error(0, e.0);
+            Vector3::ZERO
         })
+    } else {
+        v
+    };
+    Ok((vector, v.length()))
 }
 
 /// Unit Vector \[Unit\]: a vector scaled to length one.
