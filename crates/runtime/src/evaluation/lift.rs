@@ -320,6 +320,59 @@ fn lift2<A: Item, B: Item, O: Item>(
     }
 }
 
+/// The loop of a fast path over two inputs. It first makes one pass without branches over a
+/// branch pairing without nulls: each item is `f`'s, or a placeholder and a cleared flag where
+/// `f` leaves the item to the solve function. The pass is kept when no item was left and the
+/// items are too quick to spread over threads (timed on the first chunk, as `lift_loop` does);
+/// otherwise the general loop of [`lift2`] runs, which gives the same items.
+fn fast_lift2<A: Item, B: Item, O: Item>(
+    f: Arc<impl Fn(&A, &B) -> Option<O> + Send + Sync + 'static>,
+) -> Lift {
+    let g = {
+        let f = Arc::clone(&f);
+        Arc::new(move |a: &A, b: &B| f(a, b).ok_or_else(|| NodeError(FALL_BACK.into())))
+    };
+    let general = lift2::<A, B, O>(g);
+    let general_run = Arc::clone(&general.run);
+    Lift {
+        inputs: general.inputs,
+        outputs: general.outputs,
+        run: Arc::new(move |b, count, parallel, wanted| {
+            if !(b[0].has_nulls() || b[1].has_nulls()) {
+                let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
+                let f = &*f;
+                let done = with_src!(a0, count, |s0| with_src!(a1, count, |s1| {
+                    let pass = |start: usize, end: usize, out: &mut Vec<O>| {
+                        let mut all = true;
+                        out.extend(s0.iter(start, end).zip(s1.iter(start, end)).map(|(x, y)| {
+                            let r = f(x, y);
+                            all &= r.is_some();
+                            r.unwrap_or_else(O::placeholder)
+                        }));
+                        all
+                    };
+                    let mut out = Vec::with_capacity(count);
+                    let first = if parallel {
+                        count.min(LIFT_CHUNK)
+                    } else {
+                        count
+                    };
+                    let started = std::time::Instant::now();
+                    let kept = pass(0, first, &mut out)
+                        && (first == count
+                            || (!worth_spreading(started.elapsed(), first)
+                                && pass(first, count, &mut out)));
+                    kept.then_some(out)
+                }));
+                if let Some(items) = done {
+                    return one_output((Branch::from_column(O::into_column(items)), Vec::new()));
+                }
+            }
+            general_run(b, count, parallel, wanted)
+        }),
+    }
+}
+
 impl NodeType {
     /// The same node type without its lifted loop and fast paths, so that every call runs the
     /// general solve function: for tests and benchmarks that compare the two.
@@ -445,8 +498,7 @@ impl NodeType {
         mut self,
         f: impl Fn(&A, &B) -> Option<O> + Send + Sync + 'static,
     ) -> Self {
-        let g = Arc::new(move |a: &A, b: &B| f(a, b).ok_or_else(|| NodeError(FALL_BACK.into())));
-        self.fast_paths.push(lift2::<A, B, O>(g));
+        self.fast_paths.push(fast_lift2::<A, B, O>(Arc::new(f)));
         self
     }
 
