@@ -8,3 +8,4 @@ pub(crate) mod lift;
 pub(crate) mod output_modifiers;
 pub(crate) mod progress;
 pub(crate) mod solve;
+pub(crate) mod spread;

@@ -137,11 +137,13 @@
 //!   access, and `lift*` for item functions.
 //! - The 1,000-node chain evaluates in well under the 2 ms target (3.3 ms before the evaluator
 //!   grouped nodes by depth in one pass instead of one scan of the dirty nodes per depth).
-//! - Two threads: a lifted loop runs its first 16,384 items on the calling thread and times
-//!   them; it spreads the rest over the threads only when an item takes at least 8 ns
-//!   (`PARALLEL_ITEM_NANOS`, in `lift.rs`). Below that, a loop is bound by memory traffic (Move
-//!   and Addition move 48 and 24 MB for 1M items) and a second thread made it about 2× slower
-//!   here, so Move and Addition stay on one thread. The rotation is spread: 1.53× faster on two
+//! - Two threads: every loop (lifted, several outputs, the general path) first runs a probe
+//!   on the calling thread, over growing ranges of 1, 2, 4, … items until 0.1 ms have passed
+//!   (`evaluation/spread.rs`). It spreads the rest over the threads, in tasks of about 50 µs,
+//!   only when an item takes at least 8 ns and the rest at least 0.2 ms
+//!   (`PARALLEL_ITEM_NANOS`), so a hundred slow items (closest points) are spread too. Below
+//!   8 ns, a loop is bound by memory traffic (Move and Addition move 48 and 24 MB for 1M
+//!   items) and a second thread made it about 2× slower here, so Move and Addition stay on one thread. The rotation is spread: 1.53× faster on two
 //!   threads in this run, 1.4–1.74× over the session's runs depending on what else the machine
 //!   was doing; the benchmark also prints the process CPU time, 1.10–1.37× that of one thread
 //!   (the 1.74× run was the quietest, at 1.10×). The 1.7× target is therefore reached only when

@@ -36,14 +36,13 @@ use crate::{
 mod lifted;
 mod matching;
 
+use super::spread;
+
 use lifted::run_lifted;
 use matching::branch_iterations;
 
-/// Iterations per parallel chunk.
+/// The most iterations in one parallel task (fewer when items are slow, see `spread`).
 const CHUNK_ITERATIONS: usize = 8192;
-
-/// The fewest iterations for which a node's iterations are spread over threads.
-const PARALLEL_THRESHOLD: usize = 2 * CHUNK_ITERATIONS;
 
 /// Everything about a node that running it needs, besides its input data.
 #[derive(Debug)]
@@ -115,6 +114,7 @@ struct Segment {
 
 /// Runs a node on its collected input trees (one per input port, already modified and cast).
 pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) -> NodeOutput {
+    let parallel = parallel && rayon::current_num_threads() > 1;
     if let Some(out) = run_lifted(run, data, parallel) {
         return out;
     }
@@ -127,35 +127,6 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
             Err(detail) => return limited(run, NodeLimit::Items(detail)),
         };
         let has_item = run.inputs.iter().any(|p| p.access == Access::Item);
-        let mut tasks = Vec::new();
-        let total: usize = iterations.iter().map(|bi| bi.count).sum();
-        let parallel = parallel && total >= PARALLEL_THRESHOLD;
-        // Chunks are only for spreading work over threads: on one thread each branch pairing
-        // is one task, so its output branch is built in place and never stitched.
-        let chunk = if parallel {
-            CHUNK_ITERATIONS
-        } else {
-            usize::MAX
-        };
-        for (j, bi) in iterations.iter().enumerate() {
-            if bi.count == 0 {
-                tasks.push(Task {
-                    branch_iteration: j,
-                    start: 0,
-                    end: 0,
-                });
-            }
-            let mut start = 0;
-            while start < bi.count {
-                let end = start.saturating_add(chunk).min(bi.count);
-                tasks.push(Task {
-                    branch_iteration: j,
-                    start,
-                    end,
-                });
-                start = end;
-            }
-        }
         let run_one = |task: &Task| {
             run_task(
                 run,
@@ -165,14 +136,83 @@ pub(crate) fn run_node(run: &NodeRun<'_>, data: &[&DataTree], parallel: bool) ->
                 has_item,
             )
         };
-        if parallel {
-            tasks.par_iter().map(run_one).collect()
+        let units: usize = iterations.iter().map(|bi| bi.count.max(1)).sum();
+        if parallel && units > 1 {
+            // The first iterations run on this thread and are timed; the rest is spread over
+            // threads in tasks sized by that time, or run here when threads would not pay.
+            let mut segments = Vec::new();
+            let probe = spread::probe(units, CHUNK_ITERATIONS, |start, end| {
+                segments.extend(
+                    tasks_in(&iterations, start, end, usize::MAX)
+                        .iter()
+                        .map(run_one),
+                );
+            });
+            match probe.spread_chunk(units - probe.done, CHUNK_ITERATIONS) {
+                Some(chunk) => {
+                    let tasks = tasks_in(&iterations, probe.done, units, chunk);
+                    segments.par_extend(tasks.par_iter().map(run_one));
+                }
+                None => {
+                    let tasks = tasks_in(&iterations, probe.done, units, usize::MAX);
+                    segments.extend(tasks.iter().map(run_one));
+                }
+            }
+            segments
         } else {
-            tasks.iter().map(run_one).collect()
+            // On one thread each branch pairing is one task, so its output branch is built
+            // in place and never stitched.
+            tasks_in(&iterations, 0, units, usize::MAX)
+                .iter()
+                .map(run_one)
+                .collect()
         }
     };
     let out = stitch(run.node_id, outputs, segments);
     within_budget(run, out)
+}
+
+/// The tasks of the work units `start..end`, at most `chunk` iterations each. Branch
+/// pairing `j` is `max(count, 1)` units from the sum of the units before it: an empty pairing
+/// is one unit (a task of no iterations, which gives its empty output branch), and a task
+/// never spans two pairings.
+fn tasks_in(
+    iterations: &[BranchIteration<'_>],
+    start: usize,
+    end: usize,
+    chunk: usize,
+) -> Vec<Task> {
+    let mut tasks = Vec::new();
+    let mut offset = 0;
+    for (j, bi) in iterations.iter().enumerate() {
+        let width = bi.count.max(1);
+        let (from, to) = (start.max(offset), end.min(offset + width));
+        if from < to {
+            if bi.count == 0 {
+                tasks.push(Task {
+                    branch_iteration: j,
+                    start: 0,
+                    end: 0,
+                });
+            } else {
+                let mut s = from - offset;
+                while s < to - offset {
+                    let e = s.saturating_add(chunk).min(to - offset);
+                    tasks.push(Task {
+                        branch_iteration: j,
+                        start: s,
+                        end: e,
+                    });
+                    s = e;
+                }
+            }
+        }
+        offset += width;
+        if offset >= end {
+            break;
+        }
+    }
+    tasks
 }
 
 /// A node's output with empty trees and the error of the limit that stopped it.

@@ -15,6 +15,7 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use rayon::prelude::*;
 
+use super::spread;
 use crate::{Branch, DataType, Item, Level, NodeError, NodeType};
 
 pub use many::{ItemReport, Outputs};
@@ -163,21 +164,18 @@ macro_rules! with_src {
     }};
 }
 
-/// The time per item above which a loop is spread over threads: below it, a loop is bound by
-/// memory traffic (a few additions per item), and a second thread only competes for it.
-const PARALLEL_ITEM_NANOS: f64 = 8.0;
-
-/// Whether the measured time of `items` iterations makes the rest worth spreading over threads.
+/// Whether the measured time of `items` iterations says they are too slow to be bound by
+/// memory traffic (see [`spread::PARALLEL_ITEM_NANOS`]).
 pub(crate) fn worth_spreading(elapsed: std::time::Duration, items: usize) -> bool {
-    elapsed.as_secs_f64() * 1e9 >= PARALLEL_ITEM_NANOS * items as f64
+    elapsed.as_secs_f64() * 1e9 >= spread::PARALLEL_ITEM_NANOS * items as f64
 }
 
 /// Runs `f` for iterations `0..count`: a null where `is_null(k)`, and a null and an error
 /// where `f` fails. `results(start, end)` gives the same results as `f` for a range of
 /// iterations as an iterator, and `par_results` as a parallel iterator (slice iterators compile
-/// to the tightest loops). With `parallel`, the first chunk runs on this thread and is timed;
-/// the rest is spread over threads only if items are slow enough for that to pay (see
-/// [`PARALLEL_ITEM_NANOS`]). Either way the results are the same.
+/// to the tightest loops). With `parallel`, the first items run on this thread and are timed
+/// (see [`spread`]); the rest is spread over threads only if that pays. Either way the results
+/// are the same.
 fn lift_loop<O: Item, I, P>(
     count: usize,
     parallel: bool,
@@ -230,28 +228,30 @@ where
         } else {
             (0..count).map(|k| item(k, &mut errors)).collect()
         }
-    } else if parallel && count > LIFT_CHUNK {
+    } else if parallel && count > 1 {
         let mut items: Vec<O> = Vec::with_capacity(count);
-        let started = std::time::Instant::now();
-        items.extend(
-            results(0, LIFT_CHUNK)
-                .enumerate()
-                .map(|(k, r)| one(k, r, &mut errors)),
-        );
-        if worth_spreading(started.elapsed(), LIFT_CHUNK) {
+        let probe = spread::probe(count, LIFT_CHUNK, |start, end| {
+            items.extend(
+                results(start, end)
+                    .enumerate()
+                    .map(|(j, r)| one(start + j, r, &mut errors)),
+            );
+        });
+        let done = probe.done;
+        if let Some(chunk) = probe.spread_chunk(count - done, LIFT_CHUNK) {
             // Over sub-slices on each thread; failures (rare) go through a lock.
             let failed = Mutex::new(std::mem::take(&mut errors));
             // An indexed parallel iterator extends the vector in place, in order.
             items.par_extend(
-                par_results(LIFT_CHUNK, count)
-                    .with_min_len(LIFT_CHUNK)
+                par_results(done, count)
+                    .with_min_len(chunk)
                     .enumerate()
                     .map(|(j, r)| {
                         r.unwrap_or_else(|e| {
                             failed
                                 .lock()
                                 .unwrap_or_else(PoisonError::into_inner)
-                                .push((LIFT_CHUNK + j, e.0));
+                                .push((done + j, e.0));
                             O::placeholder()
                         })
                     }),
@@ -259,9 +259,9 @@ where
             errors = failed.into_inner().unwrap_or_else(PoisonError::into_inner);
         } else {
             items.extend(
-                results(LIFT_CHUNK, count)
+                results(done, count)
                     .enumerate()
-                    .map(|(j, r)| one(LIFT_CHUNK + j, r, &mut errors)),
+                    .map(|(j, r)| one(done + j, r, &mut errors)),
             );
         }
         items

@@ -1,6 +1,7 @@
 //! Lifted item functions and typed fast paths, run as loops over typed columns.
 
 use super::*;
+use crate::evaluation::spread;
 
 /// Runs a node declared with `lift1`/`lift2`/`lift3` (or their `_with` forms) as loops over
 /// typed columns, when its ports and data fit the loop (see `lift`); `None` to take the
@@ -67,8 +68,6 @@ fn run_lift(
         return None;
     }
     let wanted = run.wanted;
-    let total: usize = iterations.iter().map(|bi| bi.count).sum();
-    let parallel = parallel && total >= PARALLEL_THRESHOLD;
     let empty = || -> crate::evaluation::lift::LiftOutput {
         (
             lift.outputs.iter().map(|&t| Branch::new(t)).collect(),
@@ -85,28 +84,35 @@ fn run_lift(
             // A required input with an empty branch: the output branch is empty (gap logic).
             None => empty(),
             Some(_) if bi.count == 0 => empty(),
-            Some(b) => (lift.run)(
-                &b,
-                bi.count,
-                parallel && bi.count >= PARALLEL_THRESHOLD,
-                wanted,
-            ),
+            Some(b) => (lift.run)(&b, bi.count, parallel, wanted),
         }
     };
-    // Many branch pairings: the first runs on this thread and is timed, and the rest is spread
-    // over threads only when items are slow enough for that to pay (as within one branch).
+    // Many branch pairings: the first run on this thread and are timed, and the rest is spread
+    // over threads only when that pays (as within one branch, see `spread`).
     let results: smallvec::SmallVec<[crate::evaluation::lift::LiftOutput; 1]> = if parallel
         && iterations.len() > 1
     {
-        let started = std::time::Instant::now();
-        let first = one(&iterations[0]);
-        let spread =
-            crate::evaluation::lift::worth_spreading(started.elapsed(), iterations[0].count.max(1));
-        let rest = &iterations[1..];
         let mut results = Vec::with_capacity(iterations.len());
-        results.push(first);
-        if spread {
-            results.par_extend(rest.par_iter().map(one));
+        let probe = spread::probe(iterations.len(), usize::MAX, |start, end| {
+            results.extend(iterations[start..end].iter().map(one));
+        });
+        // Decided per item, not per branch pairing: pairings of many quick items are
+        // memory-bound however long each takes.
+        let weight =
+            |bis: &[BranchIteration<'_>]| -> usize { bis.iter().map(|bi| bi.count.max(1)).sum() };
+        let rest = &iterations[probe.done..];
+        let by_item = spread::Probe {
+            done: weight(&iterations[..probe.done]),
+            elapsed: probe.elapsed,
+        };
+        let items_left = weight(rest);
+        if let Some(chunk) = by_item.spread_chunk(items_left, usize::MAX) {
+            let per_pairing = (items_left / rest.len().max(1)).max(1);
+            results.par_extend(
+                rest.par_iter()
+                    .with_min_len((chunk / per_pairing).max(1))
+                    .map(one),
+            );
         } else {
             results.extend(rest.iter().map(one));
         }

@@ -14,9 +14,8 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use super::{
-    FALL_BACK, Full, LIFT_CHUNK, Lift, LiftOutput, One, Repeat, Src, at, items, worth_spreading,
-};
+use super::{FALL_BACK, Full, LIFT_CHUNK, Lift, LiftOutput, One, Repeat, Src, at, items};
+use crate::evaluation::spread;
 use crate::{Branch, Column, DataType, Item, Level, NodeError, NodeType, Solve};
 
 /// What one item of a lifted function reports besides its outputs: warnings, remarks and
@@ -78,10 +77,9 @@ pub trait Outputs: Sized + Send + 'static {
     /// The wanted outputs' columns of the items of `items()`, one pass over a fresh iterator
     /// per column (loops without branches, which the compiler can vectorise when the iterator
     /// is over slices and its items are simple to make).
-    fn columns_from<I: Iterator<Item = Self>>(
-        wanted: &[bool],
-        items: impl Fn() -> I,
-    ) -> Self::Columns;
+    /// Appends `items()` to the columns, one pass over the items per column (`items` is
+    /// called once per wanted output; with slice iterators the compiler vectorises each pass).
+    fn extend_columns<I: Iterator<Item = Self>>(columns: &mut Self::Columns, items: impl Fn() -> I);
     /// The placeholders stored under null items.
     fn placeholder() -> Self;
     /// Appends `other`'s columns to `columns`.
@@ -108,13 +106,13 @@ macro_rules! outputs {
                     v.push(self.$i);
                 })*
             }
-            fn columns_from<I: Iterator<Item = Self>>(
-                wanted: &[bool],
+            fn extend_columns<I: Iterator<Item = Self>>(
+                columns: &mut Self::Columns,
                 items: impl Fn() -> I,
-            ) -> Self::Columns {
-                ($(wanted.get($i).copied().unwrap_or(true).then(|| {
-                    items().map(|o| o.$i).collect::<Vec<$t>>()
-                }),)*)
+            ) {
+                $(if let Some(v) = &mut columns.$i {
+                    v.extend(items().map(|o| o.$i));
+                })*
             }
             fn placeholder() -> Self {
                 ($($t::placeholder(),)*)
@@ -190,8 +188,8 @@ fn fill<O: Outputs>(
 }
 
 /// The loop of a lifted function with several outputs over `count` iterations; with
-/// `parallel`, the first chunk runs on this thread and is timed and the rest is spread over
-/// threads only when items are slow enough for that to pay (see `worth_spreading`).
+/// `parallel`, the first items run on this thread and are timed and the rest is spread over
+/// threads only when that pays (see [`spread`]).
 fn many_loop<O: Outputs>(
     count: usize,
     parallel: bool,
@@ -206,27 +204,29 @@ fn many_loop<O: Outputs>(
         nulls: Vec::new(),
     };
     let mut all = new_chunk(count);
-    if parallel && count > LIFT_CHUNK {
-        let started = std::time::Instant::now();
-        fill::<O>(&mut all, 0..LIFT_CHUNK, any_nulls, &is_null, &f);
-        if worth_spreading(started.elapsed(), LIFT_CHUNK) {
-            let starts: Vec<usize> = (LIFT_CHUNK..count).step_by(LIFT_CHUNK).collect();
+    if parallel && count > 1 {
+        let probe = spread::probe(count, LIFT_CHUNK, |start, end| {
+            fill::<O>(&mut all, start..end, any_nulls, &is_null, &f);
+        });
+        let done = probe.done;
+        if let Some(chunk) = probe.spread_chunk(count - done, LIFT_CHUNK) {
+            let starts: Vec<usize> = (done..count).step_by(chunk).collect();
             let chunks: Vec<Chunk<O::Columns>> = starts
                 .par_iter()
                 .map(|&start| {
-                    let end = (start + LIFT_CHUNK).min(count);
-                    let mut chunk = new_chunk(end - start);
-                    fill::<O>(&mut chunk, start..end, any_nulls, &is_null, &f);
-                    chunk
+                    let end = (start + chunk).min(count);
+                    let mut part = new_chunk(end - start);
+                    fill::<O>(&mut part, start..end, any_nulls, &is_null, &f);
+                    part
                 })
                 .collect();
-            for chunk in chunks {
-                O::append(&mut all.columns, chunk.columns);
-                all.messages.extend(chunk.messages);
-                all.nulls.extend(chunk.nulls);
+            for part in chunks {
+                O::append(&mut all.columns, part.columns);
+                all.messages.extend(part.messages);
+                all.nulls.extend(part.nulls);
             }
         } else {
-            fill::<O>(&mut all, LIFT_CHUNK..count, any_nulls, &is_null, &f);
+            fill::<O>(&mut all, done..count, any_nulls, &is_null, &f);
         }
     } else {
         fill::<O>(&mut all, 0..count, any_nulls, &is_null, &f);
@@ -305,14 +305,18 @@ fn lift2_many<A: Item, B: Item, O: Outputs>(
     }
 }
 
-/// How many iterations `plain_loop` checks between looks at whether one was not clean.
+/// How many iterations `plain_loop` checks, then computes, at a time: small enough that a
+/// chunk's inputs (a few 24-byte points per iteration) stay in the L2 cache between the check
+/// and the output passes, large enough that the passes' set-up costs nothing.
 const CLEAN_CHUNK: usize = 4096;
 
 /// The branch-free loop of a lifted function: when `clean` holds for every item tuple of
 /// `tuples(0, count)` (references to one item of each input), the outputs are `plain` of each,
-/// built column by column with no report, check or null per item; `None` as soon as one tuple
-/// is not clean (the caller then runs the general loop). The check runs in chunks without an
-/// early exit inside them, so that it vectorises too.
+/// with no report, check or null per item; `None` as soon as one tuple is not clean (the
+/// caller then runs the general loop, and the partial columns are dropped). Chunk by chunk,
+/// the check runs without an early exit (so that it vectorises), then each wanted output is
+/// appended in one pass over the chunk while its inputs are still in cache, so the inputs
+/// cross the memory bus once however many outputs and checks there are.
 fn plain_loop<T: Copy, O: Outputs, I: Iterator<Item = T>>(
     count: usize,
     wanted: &[bool],
@@ -320,15 +324,17 @@ fn plain_loop<T: Copy, O: Outputs, I: Iterator<Item = T>>(
     clean: impl Fn(T) -> bool,
     plain: impl Fn(T) -> O,
 ) -> Option<LiftOutput> {
+    let mut columns = O::columns(count, wanted);
     let mut start = 0;
     while start < count {
         let end = (start + CLEAN_CHUNK).min(count);
         if !tuples(start, end).fold(true, |all, t| all & clean(t)) {
             return None;
         }
+        // The chunk's items are still in cache from the check: one trip through memory.
+        O::extend_columns(&mut columns, || tuples(start, end).map(&plain));
         start = end;
     }
-    let columns = O::columns_from(wanted, || tuples(0, count).map(&plain));
     let branches = O::finish(columns)
         .into_iter()
         .zip(O::types())
