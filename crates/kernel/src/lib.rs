@@ -82,7 +82,11 @@ pub use crate::intersect::brep_plane::{
 pub use crate::intersect::curve_curve::{
     CurveCurveHit, CurveCurveIntersections, CurveOverlap, TANGENT_SINE,
 };
+pub use crate::intersect::brep_curve::{BrepCurveHit, BrepCurveIntersections, BrepCurveOverlap};
 pub use crate::intersect::curve_plane::{CurveHit, CurveIntersections};
+pub use crate::intersect::curve_surface::{
+    CurveSurfaceHit, CurveSurfaceIntersections, CurveSurfaceOverlap,
+};
 pub use crate::intersect::linear::{line_line, line_plane, plane_plane, plane_plane_plane};
 pub use crate::intersect::mesh::{mesh_plane, mesh_ray};
 pub use crate::mesh::parameters::{
