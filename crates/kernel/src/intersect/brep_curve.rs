@@ -230,11 +230,14 @@ mod tests {
         assert_eq!(x.points.len(), 2, "{x:?}");
         assert!((x.points[0].hit.t - 1.0 / 3.0).abs() < 1e-12);
         assert!((x.points[1].hit.t - 2.0 / 3.0).abs() < 1e-12);
-        let on_face: Curve = Line::new(Point3::new(-1.0, 0.5, 1.0), Point3::new(2.0, 0.5, 1.0)).into();
+        let on_face: Curve =
+            Line::new(Point3::new(-1.0, 0.5, 1.0), Point3::new(2.0, 0.5, 1.0)).into();
         let x = b.intersect_curve(&on_face, 1e-9).unwrap();
         assert!(x.points.is_empty(), "{x:?}");
         assert_eq!(x.overlaps.len(), 1, "{x:?}");
-        assert!((x.overlaps[0].t.t0 - 1.0).abs() < 1e-12 && (x.overlaps[0].t.t1 - 2.0).abs() < 1e-12);
+        assert!(
+            (x.overlaps[0].t.t0 - 1.0).abs() < 1e-12 && (x.overlaps[0].t.t1 - 2.0).abs() < 1e-12
+        );
     }
 
     #[test]

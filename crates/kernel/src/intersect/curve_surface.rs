@@ -32,7 +32,7 @@
 
 use crate::intersect::curve_curve::{TANGENT_SINE, check_tolerance, nurbs_form};
 use crate::intersect::patch::Patch;
-use crate::intersect::piece::{Piece, boxes_meet, diagonal};
+use crate::intersect::piece::{Aabb, Piece, boxes_meet, diagonal};
 use crate::intersect::surface_newton::{CurveSurfacePoint, closest_curve_surface, flat_estimate};
 use crate::surface::direction::SurfaceDirection;
 use crate::{BoundingBox, Curve, Error, Interval, Line, NurbsCurve, NurbsSurface, Point3, Result};
@@ -50,6 +50,9 @@ const MAX_LEAVES: usize = 2048;
 const STRETCH_SAMPLES: usize = 8;
 /// Bisection steps for an overlap end that is not at a break.
 const BISECTIONS: usize = 60;
+/// Past a break, the fraction of the way to the next one at which a curve that still lies on
+/// the target is taken to run on beyond the break.
+const PROBE: f64 = 0.01;
 
 /// One point where a curve meets a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -301,9 +304,17 @@ fn descend(
     if !boxes_meet(&box_c, &box_s, tolerance) {
         return;
     }
-    let flat_c = piece.is_flat(FLATNESS, 0.25 * tolerance);
+    let deviation = piece.deviation();
+    let chord = piece.start().distance(piece.end());
+    let flat_c = deviation <= 0.25 * tolerance || deviation <= FLATNESS * chord;
+    // A nearly straight piece is tested as its chord, which prunes far better than its box.
+    if flat_c && !segment_meets_box(piece.start(), piece.end(), &box_s, tolerance + deviation) {
+        return;
+    }
     let flat_s = patch.is_flat(FLATNESS, 0.25 * tolerance);
-    if (flat_c && flat_s) || depth >= MAX_DEPTH || *leaves >= MAX_LEAVES {
+    let (size_c, size_s) = (diagonal(&box_c), diagonal(&box_s));
+    let piece_is_larger = size_c > 2.0 * size_s && size_c > tolerance;
+    if (flat_c && flat_s && !piece_is_larger) || depth >= MAX_DEPTH || *leaves >= MAX_LEAVES {
         *leaves += 1;
         let found = closest_curve_surface(whole.0, whole.1, flat_estimate(&piece, &patch));
         if found.distance <= tolerance {
@@ -311,7 +322,7 @@ fn descend(
         }
         return;
     }
-    if !flat_c && (flat_s || diagonal(&box_c) >= diagonal(&box_s)) {
+    if (!flat_c && (flat_s || size_c >= size_s)) || (flat_s && piece_is_larger) {
         let (l, r) = piece.halve();
         descend(whole, l, patch.clone(), tolerance, depth + 1, leaves, out);
         descend(whole, r, patch, tolerance, depth + 1, leaves, out);
@@ -320,6 +331,29 @@ fn descend(
         descend(whole, piece, l, tolerance, depth + 1, leaves, out);
         descend(whole, piece, r, tolerance, depth + 1, leaves, out);
     }
+}
+
+/// Whether the segment `p0 p1` comes within `gap` of the box (the box grown by `gap`, clipped
+/// against the segment slab by slab).
+fn segment_meets_box(p0: Point3, p1: Point3, b: &Aabb, gap: f64) -> bool {
+    let (a, d) = (p0.to_array(), (p1 - p0).to_array());
+    let (mut s0, mut s1) = (0.0f64, 1.0f64);
+    for k in 0..3 {
+        let (lo, hi) = (b[0][k] - gap, b[1][k] + gap);
+        if d[k] == 0.0 {
+            if a[k] < lo || a[k] > hi {
+                return false;
+            }
+        } else {
+            let (x, y) = ((lo - a[k]) / d[k], (hi - a[k]) / d[k]);
+            s0 = s0.max(x.min(y));
+            s1 = s1.min(x.max(y));
+            if s0 > s1 {
+                return false;
+            }
+        }
+    }
+    true
 }
 
 /// Merges candidates into points (with whether each is tangential) and overlap intervals
@@ -355,7 +389,10 @@ pub(crate) fn events(
     }
     let domain = curve.domain();
     if curve.is_closed() && clusters.len() > 1 {
-        let (first, last) = (&clusters[0][0], clusters[clusters.len() - 1].last().copied());
+        let (first, last) = (
+            &clusters[0][0],
+            clusters[clusters.len() - 1].last().copied(),
+        );
         if let Some(last) = last
             && first.on_curve.distance(last.on_curve) <= tolerance
         {
@@ -379,11 +416,23 @@ pub(crate) fn events(
             continue;
         }
         let breaks = breaks.get_or_insert_with(|| curve_breaks(curve, target, tolerance));
-        let (t0, t1) = if spread { (lo.t, hi.t) } else { (best.t, best.t) };
-        let start = extend(curve, target, breaks, t0, false, spread);
-        let end = extend(curve, target, breaks, t1, true, spread);
-        if curve.point_at(start).distance(curve.point_at(end)) > tolerance && start < end {
+        let (t0, t1) = if spread {
+            (lo.t, hi.t)
+        } else {
+            (best.t, best.t)
+        };
+        let (start, start_at_break) = extend(curve, target, breaks, t0, false, spread, tolerance);
+        let (end, end_at_break) = extend(curve, target, breaks, t1, true, spread, tolerance);
+        let long = curve.point_at(start).distance(curve.point_at(end)) > tolerance && start < end;
+        if long && (start_at_break || end_at_break || !tangential) {
             overlaps.push([start, end]);
+        } else if long {
+            // A touching stretch (the curve within the tolerance on both sides of a
+            // tangency): its middle is the tangency, to second order.
+            points.push((
+                touching_point(curve, target.surface(), 0.5 * (start + end), best),
+                true,
+            ));
         } else {
             points.push((best, tangential));
         }
@@ -417,6 +466,28 @@ pub(crate) fn events(
     }
     points.sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     (points, joined)
+}
+
+/// The point of the curve at `t` with the surface parameters of its closest point (`near`'s
+/// when the projection fails).
+fn touching_point(
+    curve: &NurbsCurve,
+    surface: &NurbsSurface,
+    t: f64,
+    near: CurveSurfacePoint,
+) -> CurveSurfacePoint {
+    let on_curve = curve.point_at(t);
+    match surface.closest_point(on_curve) {
+        Ok(c) => CurveSurfacePoint {
+            t,
+            u: c.u,
+            v: c.v,
+            on_curve,
+            on_surface: c.point,
+            distance: c.distance,
+        },
+        Err(_) => near,
+    }
 }
 
 /// Whether the curve stays on the target between `t0` and `t1` (sampled).
@@ -461,8 +532,9 @@ fn curve_breaks(curve: &NurbsCurve, target: &impl Target, tolerance: f64) -> Vec
 }
 
 /// Extends an overlap from `t` forwards (`up`) or backwards over the breaks while the curve
-/// stays on the target; an end between breaks is found by bisection when `bisect` (an event
-/// already known to be an overlap), and otherwise the event does not extend.
+/// stays on the target, and says whether the end is a break. Past a break, a curve that leaves
+/// the target right after it ends there; otherwise (and from `t` itself when `bisect`, for an
+/// event already known to be an overlap) the end between two breaks is found by bisection.
 fn extend(
     curve: &NurbsCurve,
     target: &impl Target,
@@ -470,8 +542,11 @@ fn extend(
     t: f64,
     up: bool,
     bisect: bool,
-) -> f64 {
+    tolerance: f64,
+) -> (f64, bool) {
     let mut at = t;
+    let scale = curve.domain().length().abs().max(t.abs()).max(1.0);
+    let mut at_break = breaks.iter().any(|&b| (b - t).abs() <= 1e-12 * scale);
     let ordered: Vec<f64> = if up {
         breaks.iter().copied().filter(|&b| b > t).collect()
     } else {
@@ -479,12 +554,14 @@ fn extend(
     };
     for b in ordered {
         let (lo, hi) = if up { (at, b) } else { (b, at) };
-        let end_on = target.contains(curve.point_at(b), None);
-        if end_on && stays_on(curve, target, lo, hi) {
+        if target.contains(curve.point_at(b), None) && stays_on(curve, target, lo, hi) {
             at = b;
+            at_break = true;
             continue;
         }
-        if bisect {
+        let leaves_at_once =
+            at_break && !target.contains(curve.point_at(probe(curve, at, b, tolerance)), None);
+        if (bisect || at_break) && !leaves_at_once {
             // The curve leaves the target between `at` and `b`.
             let (mut inside, mut outside) = (at, b);
             for _ in 0..BISECTIONS {
@@ -498,11 +575,24 @@ fn extend(
                     outside = mid;
                 }
             }
-            at = inside;
+            return (inside, false);
         }
         break;
     }
-    at
+    (at, at_break)
+}
+
+/// The parameter a little past the break `at` towards `b`: [`PROBE`] of the way, and at least
+/// far enough for the curve to move ten tolerances (at most to `b`).
+fn probe(curve: &NurbsCurve, at: f64, b: f64, tolerance: f64) -> f64 {
+    let speed = curve.derivative_at(at).length();
+    let least = if speed > 0.0 {
+        10.0 * tolerance / speed
+    } else {
+        0.0
+    };
+    let step = (PROBE * (b - at).abs()).max(least).min((b - at).abs());
+    if b > at { at + step } else { at - step }
 }
 
 /// Maps parameters of the NURBS form to the curve's own (a circle's or arc's angle).
@@ -566,8 +656,14 @@ mod tests {
         assert!(x.points.is_empty(), "{x:?}");
         assert_eq!(x.overlaps.len(), 1, "{x:?}");
         let length = 4.0;
-        assert!((x.overlaps[0].t.t0 - 1.0 / 4.0 * length).abs() < 1e-12, "{x:?}");
-        assert!((x.overlaps[0].t.t1 - 3.0 / 4.0 * length).abs() < 1e-12, "{x:?}");
+        assert!(
+            (x.overlaps[0].t.t0 - 1.0 / 4.0 * length).abs() < 1e-12,
+            "{x:?}"
+        );
+        assert!(
+            (x.overlaps[0].t.t1 - 3.0 / 4.0 * length).abs() < 1e-12,
+            "{x:?}"
+        );
         let tangent: Curve = Line::new(p(1.0, -2.0, 1.0), p(1.0, 2.0, 1.0)).into();
         let x = cylinder.intersect_curve(&tangent, 1e-9).unwrap();
         assert_eq!(x.points.len(), 1, "{x:?}");

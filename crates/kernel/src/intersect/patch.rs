@@ -168,9 +168,17 @@ impl Patch {
         ];
         let mut deviation: f64 = 0.0;
         for i in 0..nu {
-            let a = if nu > 1 { i as f64 / (nu - 1) as f64 } else { 0.0 };
+            let a = if nu > 1 {
+                i as f64 / (nu - 1) as f64
+            } else {
+                0.0
+            };
             for j in 0..nv {
-                let b = if nv > 1 { j as f64 / (nv - 1) as f64 } else { 0.0 };
+                let b = if nv > 1 {
+                    j as f64 / (nv - 1) as f64
+                } else {
+                    0.0
+                };
                 let bilinear = c[0].to_vector() * ((1.0 - a) * (1.0 - b))
                     + c[1].to_vector() * (a * (1.0 - b))
                     + c[2].to_vector() * ((1.0 - a) * b)
@@ -193,7 +201,11 @@ impl Patch {
         let bend = |along_u: bool| -> (f64, f64) {
             let (lines, count) = if along_u { (nv, nu) } else { (nu, nv) };
             let at = |line: usize, k: usize| {
-                if along_u { self.point(k, line) } else { self.point(line, k) }
+                if along_u {
+                    self.point(k, line)
+                } else {
+                    self.point(line, k)
+                }
             };
             let (mut deviation, mut length): (f64, f64) = (0.0, 0.0);
             for line in 0..lines {
@@ -203,7 +215,11 @@ impl Patch {
                 length = length.max(l2.sqrt());
                 for k in 1..count.saturating_sub(1) {
                     let d = at(line, k) - p0;
-                    let t = if l2 > 0.0 { (d.dot(chord) / l2).clamp(0.0, 1.0) } else { 0.0 };
+                    let t = if l2 > 0.0 {
+                        (d.dot(chord) / l2).clamp(0.0, 1.0)
+                    } else {
+                        0.0
+                    };
                     deviation = deviation.max((d - chord * t).length());
                 }
             }

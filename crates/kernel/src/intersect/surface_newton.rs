@@ -54,8 +54,9 @@ pub(crate) fn closest_curve_surface(
     let mut f = r.length_squared();
     let scale = d[0].length().max((d[0] - r).length()).max(1.0);
     let noise = (8.0 * f64::EPSILON * scale).powi(2);
-    let eps: [f64; 3] =
-        std::array::from_fn(|k| 4.0 * f64::EPSILON * lo[k].abs().max(hi[k].abs()).max(hi[k] - lo[k]));
+    let eps: [f64; 3] = std::array::from_fn(|k| {
+        4.0 * f64::EPSILON * lo[k].abs().max(hi[k].abs()).max(hi[k] - lo[k])
+    });
     for _ in 0..MAX_STEPS {
         if f == 0.0 {
             break;
@@ -72,7 +73,8 @@ pub(crate) fn closest_curve_surface(
         let mut lambda = 1.0;
         let mut accepted = false;
         for _ in 0..MAX_HALVINGS {
-            let xn: [f64; 3] = std::array::from_fn(|k| (x[k] + lambda * step[k]).clamp(lo[k], hi[k]));
+            let xn: [f64; 3] =
+                std::array::from_fn(|k| (x[k] + lambda * step[k]).clamp(lo[k], hi[k]));
             let (nd, nr) = eval(&xn);
             let nf = nr.length_squared();
             if nf <= f + noise {
