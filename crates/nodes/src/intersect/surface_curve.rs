@@ -59,6 +59,18 @@ fn overlap_curves(curve: &Curve, intervals: impl Iterator<Item = Interval>) -> V
         .collect()
 }
 
+/// The segments of the infinite `line` on the overlap intervals (line parameters), as curves.
+fn overlap_lines(line: &Line, intervals: impl Iterator<Item = Interval>) -> Vec<Shared<Curve>> {
+    intervals
+        .map(|i| {
+            Shared::new(Curve::from(Line::new(
+                line.point_at(i.t0),
+                line.point_at(i.t1),
+            )))
+        })
+        .collect()
+}
+
 /// The surface outputs of a surface search: points, `uv` points and normals.
 fn surface_events(
     surface: &NurbsSurface,
@@ -123,15 +135,8 @@ pub fn surface_line_node() -> NodeType {
         let surface = surface_input(s, 0)?;
         let line = line_input(s, 1)?;
         let found = surface.intersect_line(&line, INTERSECTION_TOLERANCE)?;
-        let segment = Curve::Line {
-            line,
-            domain: Interval::UNIT,
-        };
         let (points, uv, normals) = surface_events(&surface, &found);
-        s.set_list(
-            0,
-            overlap_curves(&segment, found.overlaps.iter().map(|o| o.t)),
-        );
+        s.set_list(0, overlap_lines(&line, found.overlaps.iter().map(|o| o.t)));
         s.set_list(1, points);
         s.set_list(2, uv);
         s.set_list(3, normals);
@@ -212,8 +217,7 @@ fn brep_ports(t: NodeType) -> NodeType {
     )
 }
 
-fn set_brep_outputs(s: &mut Solve<'_>, curve: &Curve, found: &BrepCurveIntersections) {
-    s.set_list(0, overlap_curves(curve, found.overlaps.iter().map(|o| o.t)));
+fn set_brep_points(s: &mut Solve<'_>, found: &BrepCurveIntersections) {
     s.set_list(1, found.points.iter().map(|h| h.hit.point).collect());
 }
 
@@ -234,11 +238,8 @@ pub fn brep_line_node() -> NodeType {
         let brep: Shared<Brep> = brep_item(s, 0)?;
         let line = line_input(s, 1)?;
         let found = brep.intersect_line(&line, INTERSECTION_TOLERANCE)?;
-        let segment = Curve::Line {
-            line,
-            domain: Interval::UNIT,
-        };
-        set_brep_outputs(s, &segment, &found);
+        s.set_list(0, overlap_lines(&line, found.overlaps.iter().map(|o| o.t)));
+        set_brep_points(s, &found);
         Ok(())
     })
 }
@@ -261,7 +262,11 @@ pub fn brep_curve_node() -> NodeType {
         let brep: Shared<Brep> = brep_item(s, 0)?;
         let curve: Shared<Curve> = curve_input(s, 1)?;
         let found = brep.intersect_curve(&curve, INTERSECTION_TOLERANCE)?;
-        set_brep_outputs(s, &curve, &found);
+        s.set_list(
+            0,
+            overlap_curves(&curve, found.overlaps.iter().map(|o| o.t)),
+        );
+        set_brep_points(s, &found);
         Ok(())
     })
 }
