@@ -45,6 +45,7 @@ pub struct BrepCurveIntersections {
 }
 
 /// A B-rep face, inside its trims.
+#[derive(Debug)]
 struct FaceTarget<'a> {
     brep: &'a Brep,
     face: usize,

@@ -198,7 +198,7 @@ pub(crate) fn clipped_line(
             t1 = t1.min(s0.max(s1));
         }
     }
-    if !(t0 < t1) {
+    if t0.is_nan() || t1.is_nan() || t0 >= t1 {
         return Ok(None);
     }
     Ok(Some(Curve::Line {
@@ -220,6 +220,7 @@ pub(crate) trait Target {
 }
 
 /// A whole surface.
+#[derive(Debug)]
 struct SurfaceTarget<'a> {
     surface: &'a NurbsSurface,
     tolerance: f64,

@@ -138,10 +138,12 @@ impl Patch {
         let sv = if hv > 0.0 { (v - self.v[0]) / hv } else { 0.0 };
         let mut rows = [[0.0; 4]; MAX_ORDER];
         let mut rows_dv = [[0.0; 4]; MAX_ORDER];
-        for i in 0..self.nu {
-            let (p, d) = bezier_with_derivative(&self.h[i * self.nv..(i + 1) * self.nv], sv);
-            rows[i] = p;
-            rows_dv[i] = d;
+        for ((row, row_dv), net_row) in rows
+            .iter_mut()
+            .zip(rows_dv.iter_mut())
+            .zip(self.h.chunks_exact(self.nv))
+        {
+            (*row, *row_dv) = bezier_with_derivative(net_row, sv);
         }
         let (p, pu) = bezier_with_derivative(&rows[..self.nu], su);
         let (pv, _) = bezier_with_derivative(&rows_dv[..self.nu], su);

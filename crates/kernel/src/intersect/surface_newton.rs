@@ -121,7 +121,7 @@ fn damped_step(columns: &[Vector3; 3], g: &[f64; 3], free: &[bool; 3]) -> Option
         trace += m[i][i];
         b[i] = -g[a];
     }
-    if !(trace > 0.0) {
+    if trace.is_nan() || trace <= 0.0 {
         return None;
     }
     let damping = 1e-12 * trace + f64::MIN_POSITIVE;
