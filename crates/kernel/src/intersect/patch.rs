@@ -9,7 +9,7 @@
 use crate::curve::bezier_piece::blossoms;
 use crate::curve::nurbs::basis::MAX_ORDER;
 use crate::intersect::piece::Aabb;
-use crate::{NurbsSurface, Plane, Point3};
+use crate::{NurbsSurface, Plane, Point3, Vector3};
 
 /// A polynomial patch on `[u0, u1] × [v0, v1]`, in Bézier form.
 #[derive(Clone, Debug)]
@@ -129,6 +129,113 @@ impl Patch {
         (numerator, weights)
     }
 
+    /// The point and its first partial derivatives `[S, Su, Sv]` at `(u, v)` (one-sided on the
+    /// patch's sides), by de Casteljau's algorithm on the homogeneous points in `v` and then
+    /// in `u`, and the quotient rule.
+    pub(crate) fn derivatives(&self, u: f64, v: f64) -> [Vector3; 3] {
+        let (hu, hv) = (self.u[1] - self.u[0], self.v[1] - self.v[0]);
+        let su = if hu > 0.0 { (u - self.u[0]) / hu } else { 0.0 };
+        let sv = if hv > 0.0 { (v - self.v[0]) / hv } else { 0.0 };
+        let mut rows = [[0.0; 4]; MAX_ORDER];
+        let mut rows_dv = [[0.0; 4]; MAX_ORDER];
+        for ((row, row_dv), net_row) in rows
+            .iter_mut()
+            .zip(rows_dv.iter_mut())
+            .zip(self.h.chunks_exact(self.nv))
+        {
+            (*row, *row_dv) = bezier_with_derivative(net_row, sv);
+        }
+        let (p, pu) = bezier_with_derivative(&rows[..self.nu], su);
+        let (pv, _) = bezier_with_derivative(&rows_dv[..self.nu], su);
+        let w = p[3];
+        let s = Vector3::new(p[0], p[1], p[2]) / w;
+        let ku = if hu > 0.0 { 1.0 / hu } else { 0.0 };
+        let kv = if hv > 0.0 { 1.0 / hv } else { 0.0 };
+        let du = (Vector3::new(pu[0], pu[1], pu[2]) - s * pu[3]) / w * ku;
+        let dv = (Vector3::new(pv[0], pv[1], pv[2]) - s * pv[3]) / w * kv;
+        [s, du, dv]
+    }
+
+    /// How far the control points lie from the bilinear patch through the four corners, as a
+    /// fraction of the diagonal of the patch's box (`relative`) or absolutely (`absolute`):
+    /// whether the patch is nearly flat, where Newton's method converges from a bilinear
+    /// estimate.
+    pub(crate) fn is_flat(&self, relative: f64, absolute: f64) -> bool {
+        let (nu, nv) = (self.nu, self.nv);
+        let c = [
+            self.point(0, 0),
+            self.point(nu - 1, 0),
+            self.point(0, nv - 1),
+            self.point(nu - 1, nv - 1),
+        ];
+        let mut deviation: f64 = 0.0;
+        for i in 0..nu {
+            let a = if nu > 1 {
+                i as f64 / (nu - 1) as f64
+            } else {
+                0.0
+            };
+            for j in 0..nv {
+                let b = if nv > 1 {
+                    j as f64 / (nv - 1) as f64
+                } else {
+                    0.0
+                };
+                let bilinear = c[0].to_vector() * ((1.0 - a) * (1.0 - b))
+                    + c[1].to_vector() * (a * (1.0 - b))
+                    + c[2].to_vector() * ((1.0 - a) * b)
+                    + c[3].to_vector() * (a * b);
+                deviation = deviation.max((self.point(i, j).to_vector() - bilinear).length());
+            }
+        }
+        let bbox = self.aabb();
+        let size = (0..3)
+            .map(|k| (bbox[1][k] - bbox[0][k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        deviation <= absolute || deviation <= relative * size
+    }
+
+    /// The direction to halve in: across the direction whose control net bends more (its
+    /// rows or columns deviate more from their chords), or the longer one when neither bends.
+    pub(crate) fn split_in_u(&self) -> bool {
+        let (nu, nv) = (self.nu, self.nv);
+        let bend = |along_u: bool| -> (f64, f64) {
+            let (lines, count) = if along_u { (nv, nu) } else { (nu, nv) };
+            let at = |line: usize, k: usize| {
+                if along_u {
+                    self.point(k, line)
+                } else {
+                    self.point(line, k)
+                }
+            };
+            let (mut deviation, mut length): (f64, f64) = (0.0, 0.0);
+            for line in 0..lines {
+                let (p0, p1) = (at(line, 0), at(line, count - 1));
+                let chord = p1 - p0;
+                let l2 = chord.length_squared();
+                length = length.max(l2.sqrt());
+                for k in 1..count.saturating_sub(1) {
+                    let d = at(line, k) - p0;
+                    let t = if l2 > 0.0 {
+                        (d.dot(chord) / l2).clamp(0.0, 1.0)
+                    } else {
+                        0.0
+                    };
+                    deviation = deviation.max((d - chord * t).length());
+                }
+            }
+            (deviation, length)
+        };
+        let (bend_u, length_u) = bend(true);
+        let (bend_v, length_v) = bend(false);
+        if bend_u.max(bend_v) > 1e-3 * length_u.max(length_v) {
+            bend_u >= bend_v
+        } else {
+            length_u >= length_v
+        }
+    }
+
     /// The two halves across `u` (`in_u`) or `v`, by de Casteljau's algorithm at the middle.
     pub(crate) fn halve(&self, in_u: bool) -> (Self, Self) {
         let (nu, nv) = (self.nu, self.nv);
@@ -167,6 +274,28 @@ impl Patch {
         }
         (left, right)
     }
+}
+
+/// A Bézier curve of homogeneous points at the local parameter `s`, and its derivative in `s`.
+fn bezier_with_derivative(points: &[[f64; 4]], s: f64) -> ([f64; 4], [f64; 4]) {
+    let n = points.len();
+    let mut q = [[0.0; 4]; MAX_ORDER];
+    q[..n].copy_from_slice(points);
+    if n == 1 {
+        return (q[0], [0.0; 4]);
+    }
+    for level in 1..n - 1 {
+        for i in 0..n - level {
+            let next = q[i + 1];
+            for (x, y) in q[i].iter_mut().zip(next) {
+                *x += s * (y - *x);
+            }
+        }
+    }
+    let k = (n - 1) as f64;
+    let derivative = std::array::from_fn(|c| k * (q[1][c] - q[0][c]));
+    let point = std::array::from_fn(|c| q[0][c] + s * (q[1][c] - q[0][c]));
+    (point, derivative)
 }
 
 #[cfg(test)]

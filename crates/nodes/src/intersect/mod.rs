@@ -1,11 +1,13 @@
 //! Grasshopper's Intersect category: lines, planes and curves against lines and planes
 //! ([`mathematical`]), meshes against rays and planes ([`mesh`]), sections and contours of
-//! B-reps and meshes ([`section`]), and curves against curves and themselves ([`physical`]).
+//! B-reps and meshes ([`section`]), curves against curves and themselves ([`physical`]), and
+//! surfaces and B-reps against lines and curves ([`surface_curve`]).
 
 pub mod mathematical;
 pub mod mesh;
 pub mod physical;
 pub mod section;
+pub mod surface_curve;
 
 use locus_runtime::NodeRegistry;
 
@@ -20,4 +22,5 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
     physical::register(registry);
     section::register(registry);
+    surface_curve::register(registry);
 }
