@@ -180,6 +180,7 @@ pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::checking::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value};
 pub use crate::checking::cast_rules::number_to_integer;
 pub use crate::checking::check::{Checked, check, check_text};
+pub use crate::checking::subgraph::{MAX_SUBGRAPH_DEPTH, MAX_SUBGRAPH_NODES};
 pub use crate::checking::diagnostic::{
     Diagnostic, DiagnosticKind, Location, PortDirection, Severity,
 };
@@ -199,7 +200,7 @@ pub use crate::file::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal}
 pub use crate::file::value_text::{format_number, format_value, parse_number};
 pub use crate::graph::{
     ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier,
-    NodeId, PortRef, Wire, text_matches,
+    NodeId, PortRef, SUBGRAPH_TYPE, SubGraph, Wire, text_matches,
 };
 pub use crate::host::{LoadError, load_file};
 pub use crate::json::{MessageJson, TreeJson, ValueJson};
