@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use locus_runtime::{
     CancelToken, DataTree, DataType, Diagnostic, DiagnosticKind, Document, Evaluator, Graph,
-    LimitHit, Limits, LoadError, MAX_SUBGRAPH_DEPTH, NodeRegistry, NodeType, Port, check,
+    LimitHit, Limits, LoadError, MAX_SUBGRAPH_DEPTH, NodeRegistry, NodeType, Port, Value, check,
     load_file,
 };
 
@@ -15,13 +15,7 @@ fn registry() -> NodeRegistry {
         NodeType::new("test.number", "Number", "N", "Test")
             .input(Port::new("Number", "N", DataType::Number).optional())
             .output(Port::new("Number", "N", DataType::Number))
-            .solve(|s| {
-                if let Ok(tree) = s.tree(0) {
-                    let tree = tree.clone();
-                    s.set_tree(0, tree);
-                }
-                Ok(())
-            }),
+            .lift1(|x: &f64| Ok(*x)),
     );
     r.register(
         NodeType::new("test.addition", "Addition", "A+B", "Test")
@@ -97,7 +91,7 @@ fn evaluator(text: &str) -> Evaluator {
     Evaluator::from_text(text, &registry()).unwrap_or_else(|d| panic!("{d:#?}"))
 }
 
-fn errors(text: &str) -> Vec<Diagnostic> {
+fn check_errors(text: &str) -> Vec<Diagnostic> {
     let doc = Document::parse(text).unwrap_or_else(|d| panic!("{d:#?}"));
     match doc.check(&registry()) {
         Ok(_) => panic!("the graph checks"),
@@ -107,9 +101,11 @@ fn errors(text: &str) -> Vec<Diagnostic> {
 
 fn numbers(tree: Option<&DataTree>) -> Vec<f64> {
     let tree = tree.expect("the output exists");
-    tree.branches()
-        .flat_map(|b| b.values())
-        .map(|v| v.and_then(|v| v.as_number()).expect("a number"))
+    tree.values()
+        .map(|v| match v {
+            Some(Value::Number(x)) => x,
+            other => panic!("not a number: {other:?}"),
+        })
         .collect()
 }
 
@@ -243,7 +239,7 @@ fn ports_take_their_types_from_the_inner_graph() {
         r#"(id: "c", type: "graph","#,
         r#"(id: "c", type: "graph", values: {"offset": "abc"},"#,
     );
-    let errors = errors(&text);
+    let errors = check_errors(&text);
     assert!(
         errors.iter().any(|d| matches!(
             &d.kind,
@@ -252,7 +248,7 @@ fn ports_take_their_types_from_the_inner_graph() {
         "{errors:#?}"
     );
     let text = inline_graph("", "").replace(r#"("n.N", "c.x")"#, r#"("n.N", "c.z")"#);
-    let errors = errors(&text);
+    let errors = check_errors(&text);
     assert!(
         errors
             .iter()
@@ -264,7 +260,7 @@ fn ports_take_their_types_from_the_inner_graph() {
 #[test]
 fn diagnostics_inside_name_the_nested_node() {
     let text = inline_graph("", "").replace("test.multiplication", "test.multiply");
-    let errors = errors(&text);
+    let errors = check_errors(&text);
     assert_eq!(errors.len(), 1, "{errors:#?}");
     assert_eq!(errors[0].node(), Some("c/scale"));
     assert!(errors[0].location.is_some());
@@ -273,7 +269,7 @@ fn diagnostics_inside_name_the_nested_node() {
 #[test]
 fn slashes_in_node_ids_are_refused() {
     let text = inline_graph("", "").replace(r#"id: "n""#, r#"id: "a/b""#);
-    let errors = errors(&text);
+    let errors = check_errors(&text);
     assert!(
         errors
             .iter()
@@ -286,7 +282,7 @@ fn slashes_in_node_ids_are_refused() {
 #[test]
 fn a_path_needs_a_graph_read_from_a_file() {
     let text = r#"(format: 1, nodes: [(id: "c", type: "graph", path: "parts/x.ron")])"#;
-    let errors = errors(text);
+    let errors = check_errors(text);
     assert_eq!(errors.len(), 1);
     assert!(errors[0].message().contains("with_origin"), "{}", errors[0]);
     let graph = Graph::from_ron(text).expect("reads");
@@ -425,10 +421,10 @@ fn run_limits_apply_inside_sub_graphs() {
 
 #[test]
 fn sub_graph_nodes_need_exactly_one_body() {
-    let errors = |text: &str| Document::parse(text).expect_err("is malformed");
-    let d = errors(r#"(format: 1, nodes: [(id: "c", type: "graph")])"#);
+    let malformed = |text: &str| Document::parse(text).expect_err("is malformed");
+    let d = malformed(r#"(format: 1, nodes: [(id: "c", type: "graph")])"#);
     assert!(d[0].message().contains("needs `path` or `graph`"), "{}", d[0]);
-    let d = errors(
+    let d = malformed(
         r#"(format: 1, nodes: [(id: "c", type: "test.number", path: "x.ron")])"#,
     );
     assert!(d[0].message().contains("only for sub-graph nodes"), "{}", d[0]);
