@@ -224,6 +224,23 @@ impl Mapper<'_> {
                 return;
             }
         };
+        self.map_cluster(o, r, cluster, depth, &inner);
+    }
+
+    /// Maps a cluster whose document is `inner` (see [`Mapper::cluster`]).
+    pub(super) fn map_cluster(
+        &mut self,
+        o: &GhObject,
+        r: ObjectRef,
+        cluster: &str,
+        depth: usize,
+        inner: &GhDocument,
+    ) {
+        let prefix = if cluster.is_empty() || self.in_cluster {
+            String::new()
+        } else {
+            format!("{cluster}/")
+        };
         let base = slug(if o.nickname.is_empty() {
             &o.name
         } else {
@@ -382,5 +399,103 @@ impl Mapper<'_> {
             };
             self.sources.insert(outer.instance.clone(), Source::Port(port));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use locus_runtime::{DataTree, Evaluator, check};
+
+    use super::*;
+
+    fn param(instance: &str, nickname: &str, sources: &[&str]) -> GhParam {
+        GhParam {
+            instance: instance.to_owned(),
+            name: nickname.to_owned(),
+            nickname: nickname.to_owned(),
+            sources: sources.iter().map(|s| (*s).to_owned()).collect(),
+            ..GhParam::default()
+        }
+    }
+
+    /// A cluster "twice" whose document adds its input to itself: x → Addition(A = x, B = x)
+    /// → y.
+    #[test]
+    fn a_cluster_becomes_a_sub_graph_node_that_runs() {
+        let mut registry = NodeRegistry::new();
+        locus_nodes::register(&mut registry);
+        let addition = registry.get("maths.addition").expect("addition").gh_guids[0].clone();
+        let inner = GhDocument {
+            objects: vec![
+                GhObject {
+                    type_guid: CLUSTER_INPUT.to_owned(),
+                    instance: "cluster-input".to_owned(),
+                    nickname: "x".to_owned(),
+                    outputs: vec![param("cluster-input-out", "x", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: addition,
+                    type_name: "Addition".to_owned(),
+                    instance: "add".to_owned(),
+                    nickname: "add".to_owned(),
+                    inputs: vec![
+                        param("add-a", "A", &["cluster-input-out"]),
+                        param("add-b", "B", &["cluster-input-out"]),
+                    ],
+                    outputs: vec![param("add-r", "R", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: CLUSTER_OUTPUT.to_owned(),
+                    instance: "cluster-output".to_owned(),
+                    nickname: "y".to_owned(),
+                    inputs: vec![param("cluster-output-in", "y", &["add-r"])],
+                    ..GhObject::default()
+                },
+            ],
+            ..GhDocument::default()
+        };
+        let cluster = GhObject {
+            type_name: "Cluster".to_owned(),
+            instance: "cluster".to_owned(),
+            nickname: "twice".to_owned(),
+            inputs: vec![param("cluster-in", "x", &[])],
+            outputs: vec![param("cluster-out", "y", &[])],
+            ..GhObject::default()
+        };
+        let limits = Limits::default();
+        let mut m = Mapper::new(&registry, &limits, Graph::default(), Vec::new());
+        m.map_cluster(&cluster, object_ref(&cluster, ""), "", 0, &inner);
+        m.wire();
+        let mut graph = m.finish().graph;
+        let node = &graph.nodes[0];
+        assert_eq!((node.id.0.as_str(), node.node_type.as_str()), ("twice", "graph"));
+        let Some(SubGraph::Inline(body)) = &node.subgraph else {
+            panic!("an inline sub-graph: {node:?}");
+        };
+        assert_eq!(body.inputs[0].name, "x");
+        assert_eq!(body.outputs[0].name, "y");
+        let text = graph.to_ron();
+        assert!(text.contains("graph: ("), "{text}");
+        // It checks and runs once given an input.
+        graph.nodes[0].values.push(("x".to_owned(), Literal("[1, 2]".to_owned())));
+        graph.format = locus_runtime::FORMAT_VERSION;
+        graph.outputs.push(GraphOutput {
+            name: "y".to_owned(),
+            source: PortRef {
+                node: NodeId("twice".to_owned()),
+                port: "y".to_owned(),
+            },
+        });
+        let checked = check(&graph, &registry).unwrap_or_else(|d| panic!("{d:#?}\n{text}"));
+        let mut e = Evaluator::new(checked.plan);
+        e.evaluate();
+        assert_eq!(
+            e.output("y"),
+            Some(&DataTree::from_items(vec![2.0_f64, 4.0])),
+            "{:?}",
+            e.messages().collect::<Vec<_>>()
+        );
     }
 }
