@@ -187,11 +187,6 @@ impl Mapper<'_> {
     /// the graph's named inputs and outputs, so that the cluster's k-th input feeds the k-th
     /// Cluster Input and its k-th output reads the k-th Cluster Output.
     pub(super) fn cluster(&mut self, o: &GhObject, r: ObjectRef, cluster: &str, depth: usize) {
-        let prefix = if cluster.is_empty() || self.in_cluster {
-            String::new()
-        } else {
-            format!("{cluster}/")
-        };
         if o.outputs.is_empty() {
             // Nothing downstream can depend on a cluster without outputs (such clusters open
             // a web page or draw in the canvas): whatever is inside, there is no data to run.
