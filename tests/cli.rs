@@ -360,7 +360,10 @@ fn sub_graphs_run_and_report_inner_nodes_by_nested_id() {
     // y = 3x + 10: 22 and 1; the root of 22, then of 1.
     assert!(out.contains("doubled:"), "{out}");
     assert!(out.contains("44"), "{out}");
-    assert!(!all.contains("part/root"), "no warning for non-negative y: {all}");
+    assert!(
+        !all.contains("part/root"),
+        "no warning for non-negative y: {all}"
+    );
     let o = locus(&["run", "graphs/cluster_subgraph.ron"]);
     let all = format!("{}{}", stdout(&o), stderr(&o));
     assert!(all.contains("node \"part/root\""), "{all}");

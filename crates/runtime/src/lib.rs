@@ -180,10 +180,10 @@ pub use crate::call::{NodeCall, NodeCallResult};
 pub use crate::checking::cast::{CastError, can_cast, cast_branch, cast_tree, cast_value};
 pub use crate::checking::cast_rules::number_to_integer;
 pub use crate::checking::check::{Checked, check, check_text};
-pub use crate::checking::subgraph::{MAX_SUBGRAPH_DEPTH, MAX_SUBGRAPH_NODES};
 pub use crate::checking::diagnostic::{
     Diagnostic, DiagnosticKind, Location, PortDirection, Severity,
 };
+pub use crate::checking::subgraph::{MAX_SUBGRAPH_DEPTH, MAX_SUBGRAPH_NODES};
 pub use crate::compare::{COMPARE_TOLERANCE, compare_expected, compare_trees, values_agree};
 pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};

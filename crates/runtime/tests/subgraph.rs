@@ -293,7 +293,10 @@ fn a_path_needs_a_graph_read_from_a_file() {
 #[test]
 fn a_missing_or_broken_file_is_an_error_naming_it() {
     let dir = dir("bad_path");
-    write(&dir.join("parts/broken.ron"), "(format: 1, nodes: [(id: \"a\"]");
+    write(
+        &dir.join("parts/broken.ron"),
+        "(format: 1, nodes: [(id: \"a\"]",
+    );
     write(
         &dir.join("parts/inner_error.ron"),
         "(format: 1,\n nodes: [(id: \"a\", type: \"test.nothing\")])",
@@ -371,7 +374,10 @@ fn nesting_deeper_than_the_limit_is_an_error() {
     };
     assert_eq!(d.len(), 1, "{d:#?}");
     assert!(d[0].message().contains("MAX_SUBGRAPH_DEPTH"), "{}", d[0]);
-    assert_eq!(d[0].node().map(|n| n.split('/').count()), Some(MAX_SUBGRAPH_DEPTH + 1));
+    assert_eq!(
+        d[0].node().map(|n| n.split('/').count()),
+        Some(MAX_SUBGRAPH_DEPTH + 1)
+    );
     // One level less checks.
     std::fs::remove_file(dir.join(format!("g{}.ron", levels - 1))).unwrap();
     write(
@@ -423,9 +429,15 @@ fn run_limits_apply_inside_sub_graphs() {
 fn sub_graph_nodes_need_exactly_one_body() {
     let malformed = |text: &str| Document::parse(text).expect_err("is malformed");
     let d = malformed(r#"(format: 1, nodes: [(id: "c", type: "graph")])"#);
-    assert!(d[0].message().contains("needs `path` or `graph`"), "{}", d[0]);
-    let d = malformed(
-        r#"(format: 1, nodes: [(id: "c", type: "test.number", path: "x.ron")])"#,
+    assert!(
+        d[0].message().contains("needs `path` or `graph`"),
+        "{}",
+        d[0]
     );
-    assert!(d[0].message().contains("only for sub-graph nodes"), "{}", d[0]);
+    let d = malformed(r#"(format: 1, nodes: [(id: "c", type: "test.number", path: "x.ron")])"#);
+    assert!(
+        d[0].message().contains("only for sub-graph nodes"),
+        "{}",
+        d[0]
+    );
 }

@@ -306,7 +306,9 @@ impl Mapper<'_> {
                 node: node.clone(),
                 port: "Data".to_owned(),
             };
-            inner_map.node_pos.insert(node.clone(), inner_map.graph.nodes.len());
+            inner_map
+                .node_pos
+                .insert(node.clone(), inner_map.graph.nodes.len());
             inner_map
                 .nodes_by_object
                 .insert(boundary.instance.clone(), node.clone());
@@ -364,7 +366,9 @@ impl Mapper<'_> {
         self.report.diagnostics.extend(mapped.report.diagnostics);
         // The sub-graph node, wired as any component: outer input k feeds named input k, and
         // outer output k is named output k.
-        self.report.objects.push((r.clone(), Outcome::Mapped(id.clone())));
+        self.report
+            .objects
+            .push((r.clone(), Outcome::Mapped(id.clone())));
         self.notes.push((id.clone(), format!("{r}")));
         self.nodes_by_object.insert(o.instance.clone(), id.clone());
         self.node_pos.insert(id.clone(), self.graph.nodes.len());
@@ -392,7 +396,8 @@ impl Mapper<'_> {
                 node: id.clone(),
                 port: name.clone(),
             };
-            self.sources.insert(outer.instance.clone(), Source::Port(port));
+            self.sources
+                .insert(outer.instance.clone(), Source::Port(port));
         }
     }
 }
@@ -465,7 +470,10 @@ mod tests {
         m.wire();
         let mut graph = m.finish().graph;
         let node = &graph.nodes[0];
-        assert_eq!((node.id.0.as_str(), node.node_type.as_str()), ("twice", "graph"));
+        assert_eq!(
+            (node.id.0.as_str(), node.node_type.as_str()),
+            ("twice", "graph")
+        );
         let Some(SubGraph::Inline(body)) = &node.subgraph else {
             panic!("an inline sub-graph: {node:?}");
         };
@@ -474,7 +482,9 @@ mod tests {
         let text = graph.to_ron();
         assert!(text.contains("graph: ("), "{text}");
         // It checks and runs once given an input.
-        graph.nodes[0].values.push(("x".to_owned(), Literal("[1, 2]".to_owned())));
+        graph.nodes[0]
+            .values
+            .push(("x".to_owned(), Literal("[1, 2]".to_owned())));
         graph.format = locus_runtime::FORMAT_VERSION;
         graph.outputs.push(GraphOutput {
             name: "y".to_owned(),

@@ -14,8 +14,8 @@ use std::sync::Arc;
 use petgraph::graph::{DiGraph, NodeIndex};
 
 use crate::checking::before_run::check_before_run;
-use crate::checking::subgraph::{Nesting, check_nested};
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+use crate::checking::subgraph::{Nesting, check_nested};
 use crate::file::expected::ExpectedTree;
 use crate::file::format::{Document, SourceMap};
 use crate::file::literal::{LiteralError, tree_from_node, value_from_node};
@@ -106,7 +106,11 @@ pub(crate) struct Checker<'a> {
 }
 
 impl<'a> Checker<'a> {
-    pub(crate) fn new(graph: &'a Graph, doc: Option<&'a Document>, registry: &'a NodeRegistry) -> Self {
+    pub(crate) fn new(
+        graph: &'a Graph,
+        doc: Option<&'a Document>,
+        registry: &'a NodeRegistry,
+    ) -> Self {
         Self {
             graph,
             doc,
@@ -128,7 +132,10 @@ impl<'a> Checker<'a> {
     }
 
     /// The checker with the node types of the graph's sub-graph nodes (`checking/subgraph.rs`).
-    pub(crate) fn with_subgraphs(mut self, subgraphs: HashMap<usize, Option<&'a NodeType>>) -> Self {
+    pub(crate) fn with_subgraphs(
+        mut self,
+        subgraphs: HashMap<usize, Option<&'a NodeType>>,
+    ) -> Self {
         self.subgraphs = subgraphs;
         self
     }

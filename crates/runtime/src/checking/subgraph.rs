@@ -79,7 +79,9 @@ pub(crate) fn check_nested(
         && let Some(origin) = doc.and_then(Document::origin)
         && let Ok(canonical) = origin.canonicalize()
     {
-        nesting.files.push((canonical, origin.display().to_string()));
+        nesting
+            .files
+            .push((canonical, origin.display().to_string()));
     }
     let mut diagnostics = Vec::new();
     let mut inners: HashMap<usize, Option<Inner>> = HashMap::new();
@@ -422,11 +424,7 @@ fn splice(outer: Plan, mut inner: Vec<Option<Plan>>) -> (Plan, Vec<(usize, Strin
         // its named inputs set.
         for (j, outside) in node.inputs.iter().enumerate() {
             let (_, m, k) = &plan.inputs[j];
-            let sources: Vec<_> = outside
-                .sources
-                .iter()
-                .map(|s| source(&inner, *s))
-                .collect();
+            let sources: Vec<_> = outside.sources.iter().map(|s| source(&inner, *s)).collect();
             let target = &mut nodes[first + m].inputs[*k];
             target.sources.extend(sources);
             if outside.value.is_some() {

@@ -96,7 +96,10 @@ fn node_node(node: &GraphNode) -> Node {
         None => {}
         Some(SubGraph::Path(path)) => fields.push(field("path", string_node(path))),
         Some(SubGraph::Inline(graph)) => {
-            fields.push(field("graph", Node::new(Kind::Struct(None, graph_fields(graph)))));
+            fields.push(field(
+                "graph",
+                Node::new(Kind::Struct(None, graph_fields(graph))),
+            ));
         }
     }
     Node::new(Kind::Struct(None, fields))

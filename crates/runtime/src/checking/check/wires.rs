@@ -281,7 +281,10 @@ impl<'a> Checker<'a> {
             // (`checking/subgraph.rs`).
             let outer = m.node.0.split('/').next().unwrap_or_default();
             let nested = m.node.0.contains('/')
-                && self.index.get(outer).is_some_and(|i| self.subgraphs.contains_key(i));
+                && self
+                    .index
+                    .get(outer)
+                    .is_some_and(|i| self.subgraphs.contains_key(i));
             if !nested && !self.index.contains_key(m.node.0.as_str()) {
                 let at = self.map().and_then(|map| map.expected_messages.get(e));
                 self.error(
