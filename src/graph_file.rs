@@ -89,7 +89,9 @@ pub(crate) fn load(registry: &NodeRegistry, path: &Path) -> Result<Loaded, LoadE
     } else {
         read_graph_file(path, MAX_GRAPH_FILE_BYTES).map_err(LoadError::Io)?
     };
-    let document = Document::parse(&text).map_err(LoadError::Diagnostics)?;
+    let document = Document::parse(&text)
+        .map_err(LoadError::Diagnostics)?
+        .with_origin(path);
     let checked = document.check(registry).map_err(LoadError::Diagnostics)?;
     Ok(Loaded { document, checked })
 }

@@ -350,3 +350,40 @@ fn devices_fifos_and_bad_thread_counts_are_refused() {
     let o = locus(&["run", path.to_str().unwrap(), "--timeout", "-1"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn sub_graphs_run_and_report_inner_nodes_by_nested_id() {
+    let o = locus(&["run", "graphs/cluster_subgraph.ron", "--set", "x=[4, -3]"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let all = format!("{out}{}", stderr(&o));
+    // y = 3x + 10: 22 and 1; the root of 22, then of 1.
+    assert!(out.contains("doubled:"), "{out}");
+    assert!(out.contains("44"), "{out}");
+    assert!(
+        !all.contains("part/root"),
+        "no warning for non-negative y: {all}"
+    );
+    let o = locus(&["run", "graphs/cluster_subgraph.ron"]);
+    let all = format!("{}{}", stdout(&o), stderr(&o));
+    assert!(all.contains("node \"part/root\""), "{all}");
+    // A sub-graph file's problem names the file and the nested node.
+    let dir = std::env::temp_dir().join(format!("locus-cli-sub-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("parts")).expect("a temporary folder");
+    std::fs::write(
+        dir.join("parts/bad.ron"),
+        "(\n    format: 1,\n    nodes: [(id: \"a\", type: \"maths.additon\")],\n)\n",
+    )
+    .expect("written");
+    let top = dir.join("top.ron");
+    std::fs::write(
+        &top,
+        r#"(format: 1, nodes: [(id: "c", type: "graph", path: "parts/bad.ron")])"#,
+    )
+    .expect("written");
+    let o = locus(&["check", top.to_str().expect("a UTF-8 path")]);
+    assert_eq!(o.status.code(), Some(3));
+    let err = stderr(&o);
+    assert!(err.contains("parts/bad.ron:3:"), "{err}");
+    assert!(err.contains("\"c/a\""), "{err}");
+}

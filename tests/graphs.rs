@@ -75,7 +75,7 @@ fn every_graph_meets_its_expectations_with_any_thread_count() {
             .to_string();
         let text = std::fs::read_to_string(file).expect("the graph is readable");
         let document = match Document::parse(&text) {
-            Ok(d) => d,
+            Ok(d) => d.with_origin(file),
             Err(ds) => {
                 failures.push(format!("{name}: does not read: {}", ds[0].message()));
                 continue;

@@ -218,6 +218,14 @@ pub fn export_ghx(
     let mut warnings = Vec::new();
     let mut nodes = Vec::new();
     for n in &graph.nodes {
+        if n.subgraph.is_some() || n.node_type == locus_runtime::SUBGRAPH_TYPE {
+            return Err(ExportError::Node {
+                node: n.id.0.clone(),
+                reason: "sub-graph nodes cannot be written as .ghx yet (Grasshopper clusters \
+                         need a nested binary archive); the graph is not exported"
+                    .to_owned(),
+            });
+        }
         let t = registry
             .get(&n.node_type)
             .ok_or_else(|| ExportError::Node {

@@ -4,14 +4,14 @@
 //! matched by index and their names checked. Widgets become parameter nodes with their
 //! values, pass-through parameters are joined across, display-only objects are dropped, and
 //! everything else (scripts, plugins, Hops calls, components without a node) is reported while
-//! the rest of the definition is still mapped. Clusters are flattened: their objects become
-//! nodes whose ids start with the cluster's path (`cluster-nick/inner-id`).
+//! the rest of the definition is still mapped. Clusters become sub-graph nodes with an inline
+//! graph (their Cluster Input and Output objects its named inputs and outputs, in order).
 
 use std::collections::{HashMap, HashSet};
 
 use locus_runtime::{
     DataType, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal, Modifier, NodeId,
-    NodeRegistry, NodeType, PortRef, Wire,
+    NodeRegistry, NodeType, PortRef, SUBGRAPH_TYPE, SubGraph, Wire,
 };
 
 use crate::document::{GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree, read_cluster};
@@ -84,6 +84,10 @@ struct Mapper<'a> {
     /// Rhino.Compute's names: (object index, name, port, canvas y) of inputs and outputs.
     compute_inputs: Vec<(usize, String, PortRef, f64)>,
     compute_outputs: Vec<(usize, String, PortRef, f64)>,
+    /// Whether this maps a cluster's document into an inline sub-graph: its node ids are
+    /// then its own (the sub-graph node's id scopes them), and `cluster` only names objects
+    /// in the report.
+    in_cluster: bool,
 }
 
 struct PendingInput {
@@ -95,34 +99,17 @@ struct PendingInput {
 
 /// Maps a definition onto a graph.
 pub fn import_document(doc: &GhDocument, registry: &NodeRegistry, limits: &Limits) -> Import {
-    let mut m = Mapper {
-        registry,
-        limits,
-        graph: Graph {
-            format: locus_runtime::FORMAT_VERSION,
-            name: doc
-                .name
-                .trim_end_matches(".ghx")
-                .trim_end_matches(".gh")
-                .to_owned(),
-            description: doc.description.clone(),
-            ..Graph::default()
-        },
-        report: Report::default(),
-        notes: Vec::new(),
-        ids: HashSet::new(),
-        sources: HashMap::new(),
-        nodes_by_object: HashMap::new(),
-        input_ports: HashMap::new(),
-        node_pos: HashMap::new(),
-        pending: Vec::new(),
-        inputs: Vec::new(),
-        outputs: Vec::new(),
-        panels: Vec::new(),
-        libraries: doc.libraries.clone(),
-        compute_inputs: Vec::new(),
-        compute_outputs: Vec::new(),
+    let graph = Graph {
+        format: locus_runtime::FORMAT_VERSION,
+        name: doc
+            .name
+            .trim_end_matches(".ghx")
+            .trim_end_matches(".gh")
+            .to_owned(),
+        description: doc.description.clone(),
+        ..Graph::default()
     };
+    let mut m = Mapper::new(registry, limits, graph, doc.libraries.clone());
     m.objects(doc, "", 0);
     m.groups(doc);
     m.wire();
@@ -232,7 +219,7 @@ impl Mapper<'_> {
 
     fn object(&mut self, o: &GhObject, cluster: &str, depth: usize) {
         let r = object_ref(o, cluster);
-        let prefix = if cluster.is_empty() {
+        let prefix = if cluster.is_empty() || self.in_cluster {
             String::new()
         } else {
             format!("{cluster}/")
@@ -305,7 +292,7 @@ impl Mapper<'_> {
                 "hops",
                 "Hops calls a remote definition, which a headless run does not do".to_owned(),
             ),
-            Some(Special::Cluster) => self.cluster(o, r, &prefix, depth),
+            Some(Special::Cluster) => self.cluster(o, r, cluster, depth),
             None => {
                 if is_script(o) {
                     self.unsupported(
@@ -830,6 +817,36 @@ impl Mapper<'_> {
             notes: self.notes,
             compute_inputs,
             compute_outputs,
+        }
+    }
+}
+
+impl<'a> Mapper<'a> {
+    fn new(
+        registry: &'a NodeRegistry,
+        limits: &'a Limits,
+        graph: Graph,
+        libraries: Vec<crate::document::Library>,
+    ) -> Self {
+        Self {
+            registry,
+            limits,
+            graph,
+            report: Report::default(),
+            notes: Vec::new(),
+            ids: HashSet::new(),
+            sources: HashMap::new(),
+            nodes_by_object: HashMap::new(),
+            input_ports: HashMap::new(),
+            node_pos: HashMap::new(),
+            pending: Vec::new(),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            panels: Vec::new(),
+            libraries,
+            compute_inputs: Vec::new(),
+            compute_outputs: Vec::new(),
+            in_cluster: false,
         }
     }
 }

@@ -7,3 +7,4 @@ pub(crate) mod cast_mesh;
 pub(crate) mod cast_rules;
 pub(crate) mod check;
 pub(crate) mod diagnostic;
+pub(crate) mod subgraph;

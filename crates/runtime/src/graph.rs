@@ -177,6 +177,21 @@ pub struct GraphNode {
     pub matching: Matching,
     /// A disabled node outputs nothing.
     pub disabled: bool,
+    /// For a sub-graph node (type [`SUBGRAPH_TYPE`]): the graph it runs.
+    pub subgraph: Option<SubGraph>,
+}
+
+/// The node type of sub-graph nodes: a node of this type runs another graph, whose named
+/// inputs and outputs are its ports (`docs/graph-format.md`, "Sub-graphs").
+pub const SUBGRAPH_TYPE: &str = "graph";
+
+/// The body of a sub-graph node.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SubGraph {
+    /// A graph file, relative to the directory of the file that includes it (`path:`).
+    Path(String),
+    /// A graph written inside the node (`graph: (…)`).
+    Inline(Box<Graph>),
 }
 
 /// A reference to a port of a node: `node.port` in files.

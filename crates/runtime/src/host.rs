@@ -52,7 +52,7 @@ pub fn load_file(path: impl AsRef<Path>, registry: &NodeRegistry) -> Result<Chec
         }
     })?;
     Document::parse(&text)
-        .and_then(|doc| doc.check(registry))
+        .and_then(|doc| doc.with_origin(path).check(registry))
         .map_err(LoadError::Invalid)
 }
 

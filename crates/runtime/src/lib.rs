@@ -185,6 +185,7 @@ pub use crate::checking::check::{Checked, check, check_text};
 pub use crate::checking::diagnostic::{
     Diagnostic, DiagnosticKind, Location, PortDirection, Severity,
 };
+pub use crate::checking::subgraph::{MAX_SUBGRAPH_DEPTH, MAX_SUBGRAPH_NODES};
 pub use crate::compare::{COMPARE_TOLERANCE, compare_expected, compare_trees, values_agree};
 pub use crate::dot::to_dot;
 pub use crate::evaluation::evaluator::{EvalError, Evaluator};
@@ -201,7 +202,7 @@ pub use crate::file::literal::{LiteralError, UNIT_AXIS_TOLERANCE, parse_literal}
 pub use crate::file::value_text::{format_number, format_value, parse_number};
 pub use crate::graph::{
     ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Literal, Modifier,
-    NodeId, PortRef, Wire, text_matches,
+    NodeId, PortRef, SUBGRAPH_TYPE, SubGraph, Wire, text_matches,
 };
 pub use crate::host::{LoadError, load_file};
 pub use crate::json::{MessageJson, TreeJson, ValueJson};

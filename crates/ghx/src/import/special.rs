@@ -182,7 +182,11 @@ impl Mapper<'_> {
         }
     }
 
-    pub(super) fn cluster(&mut self, o: &GhObject, r: ObjectRef, prefix: &str, depth: usize) {
+    /// A cluster becomes a sub-graph node whose inline graph is the cluster's document: its
+    /// Cluster Input and Output objects (in document order) become Data parameters that are
+    /// the graph's named inputs and outputs, so that the cluster's k-th input feeds the k-th
+    /// Cluster Input and its k-th output reads the k-th Cluster Output.
+    pub(super) fn cluster(&mut self, o: &GhObject, r: ObjectRef, cluster: &str, depth: usize) {
         if o.outputs.is_empty() {
             // Nothing downstream can depend on a cluster without outputs (such clusters open
             // a web page or draw in the canvas): whatever is inside, there is no data to run.
@@ -215,12 +219,29 @@ impl Mapper<'_> {
                 return;
             }
         };
+        self.map_cluster(o, r, cluster, depth, &inner);
+    }
+
+    /// Maps a cluster whose document is `inner` (see [`Mapper::cluster`]).
+    pub(super) fn map_cluster(
+        &mut self,
+        o: &GhObject,
+        r: ObjectRef,
+        cluster: &str,
+        depth: usize,
+        inner: &GhDocument,
+    ) {
+        let prefix = if cluster.is_empty() || self.in_cluster {
+            String::new()
+        } else {
+            format!("{cluster}/")
+        };
         let base = slug(if o.nickname.is_empty() {
             &o.name
         } else {
             &o.nickname
         });
-        let path = self.unique_id(prefix, &base).0;
+        let id = self.unique_id(&prefix, &base);
         // The cluster's ports are the Cluster Input and Output objects inside, in order.
         let boundary_in: Vec<&GhObject> = inner
             .objects
@@ -247,22 +268,87 @@ impl Mapper<'_> {
             );
             return;
         }
-        self.report.objects.push((r.clone(), Outcome::PassThrough));
-        // Outer input k feeds the inner Cluster Input k; inner Cluster Output k is outer
-        // output k.
-        for (outer, inner_in) in o.inputs.iter().zip(&boundary_in) {
-            if let Some(p) = inner_in.outputs.first() {
-                self.sources
-                    .insert(p.instance.clone(), Source::Through(outer.sources.clone()));
+        // The inner document, mapped on its own; its objects are named in the report under
+        // the cluster's path.
+        let path = if cluster.is_empty() {
+            id.0.clone()
+        } else {
+            format!("{cluster}/{id}")
+        };
+        let mut inner_map = Mapper::new(
+            self.registry,
+            self.limits,
+            Graph {
+                format: locus_runtime::FORMAT_VERSION,
+                name: o.name.clone(),
+                ..Graph::default()
+            },
+            inner.libraries.clone(),
+        );
+        inner_map.in_cluster = true;
+        let (mut seen_in, mut seen_out) = (HashSet::new(), HashSet::new());
+        let mut in_names = Vec::new();
+        let mut out_names = Vec::new();
+        for (k, boundary) in boundary_in.iter().chain(&boundary_out).enumerate() {
+            let input = k < boundary_in.len();
+            let base = slug(if boundary.nickname.is_empty() {
+                &boundary.name
+            } else {
+                &boundary.nickname
+            });
+            let base = if base.is_empty() {
+                if input { "input" } else { "output" }.to_owned()
+            } else {
+                base
+            };
+            let node = inner_map.unique_id("", &base);
+            let data = PortRef {
+                node: node.clone(),
+                port: "Data".to_owned(),
+            };
+            inner_map
+                .node_pos
+                .insert(node.clone(), inner_map.graph.nodes.len());
+            inner_map
+                .nodes_by_object
+                .insert(boundary.instance.clone(), node.clone());
+            inner_map.graph.nodes.push(GraphNode {
+                id: node.clone(),
+                node_type: "params.data".to_owned(),
+                ..GraphNode::default()
+            });
+            inner_map.notes.push((
+                node.clone(),
+                format!(
+                    "Cluster {} \"{}\" {}",
+                    if input { "Input" } else { "Output" },
+                    boundary.nickname,
+                    boundary.instance
+                ),
+            ));
+            if input {
+                let name = unique_name(&mut seen_in, base);
+                if let Some(p) = boundary.outputs.first() {
+                    inner_map
+                        .sources
+                        .insert(p.instance.clone(), Source::Port(data.clone()));
+                }
+                inner_map.inputs.push((name.clone(), data));
+                in_names.push(name);
+            } else {
+                let name = unique_name(&mut seen_out, base);
+                if let Some(p) = boundary.inputs.first() {
+                    inner_map.pending.push(PendingInput {
+                        node,
+                        port: "Data".to_owned(),
+                        sources: p.sources.clone(),
+                        object: object_ref(boundary, &path),
+                    });
+                }
+                inner_map.outputs.push((name.clone(), data));
+                out_names.push(name);
             }
         }
-        for (outer, inner_out) in o.outputs.iter().zip(&boundary_out) {
-            if let Some(p) = inner_out.inputs.first() {
-                self.sources
-                    .insert(outer.instance.clone(), Source::Through(p.sources.clone()));
-            }
-        }
-        let cluster_path = path.clone();
         let rest = GhDocument {
             objects: inner
                 .objects
@@ -273,8 +359,148 @@ impl Mapper<'_> {
             libraries: inner.libraries.clone(),
             ..GhDocument::default()
         };
-        let saved = std::mem::replace(&mut self.libraries, rest.libraries.clone());
-        self.objects(&rest, &cluster_path, depth + 1);
-        self.libraries = saved;
+        inner_map.objects(&rest, &path, depth + 1);
+        inner_map.wire();
+        let mapped = inner_map.finish();
+        self.report.objects.extend(mapped.report.objects);
+        self.report.diagnostics.extend(mapped.report.diagnostics);
+        // The sub-graph node, wired as any component: outer input k feeds named input k, and
+        // outer output k is named output k.
+        self.report
+            .objects
+            .push((r.clone(), Outcome::Mapped(id.clone())));
+        self.notes.push((id.clone(), format!("{r}")));
+        self.nodes_by_object.insert(o.instance.clone(), id.clone());
+        self.node_pos.insert(id.clone(), self.graph.nodes.len());
+        self.graph.nodes.push(GraphNode {
+            id: id.clone(),
+            node_type: SUBGRAPH_TYPE.to_owned(),
+            subgraph: Some(SubGraph::Inline(Box::new(mapped.graph))),
+            ..GraphNode::default()
+        });
+        for (outer, name) in o.inputs.iter().zip(&in_names) {
+            let port = PortRef {
+                node: id.clone(),
+                port: name.clone(),
+            };
+            self.input_ports.insert(outer.instance.clone(), port);
+            self.pending.push(PendingInput {
+                node: id.clone(),
+                port: name.clone(),
+                sources: outer.sources.clone(),
+                object: r.clone(),
+            });
+        }
+        for (outer, name) in o.outputs.iter().zip(&out_names) {
+            let port = PortRef {
+                node: id.clone(),
+                port: name.clone(),
+            };
+            self.sources
+                .insert(outer.instance.clone(), Source::Port(port));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use locus_runtime::{DataTree, Evaluator, check};
+
+    use super::*;
+
+    fn param(instance: &str, nickname: &str, sources: &[&str]) -> GhParam {
+        GhParam {
+            instance: instance.to_owned(),
+            name: nickname.to_owned(),
+            nickname: nickname.to_owned(),
+            sources: sources.iter().map(|s| (*s).to_owned()).collect(),
+            ..GhParam::default()
+        }
+    }
+
+    /// A cluster "twice" whose document adds its input to itself: x → Addition(A = x, B = x)
+    /// → y.
+    #[test]
+    fn a_cluster_becomes_a_sub_graph_node_that_runs() {
+        let mut registry = NodeRegistry::new();
+        locus_nodes::register(&mut registry);
+        let addition = registry.get("maths.addition").expect("addition").gh_guids[0].clone();
+        let inner = GhDocument {
+            objects: vec![
+                GhObject {
+                    type_guid: CLUSTER_INPUT.to_owned(),
+                    instance: "cluster-input".to_owned(),
+                    nickname: "x".to_owned(),
+                    outputs: vec![param("cluster-input-out", "x", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: addition,
+                    type_name: "Addition".to_owned(),
+                    instance: "add".to_owned(),
+                    nickname: "add".to_owned(),
+                    inputs: vec![
+                        param("add-a", "A", &["cluster-input-out"]),
+                        param("add-b", "B", &["cluster-input-out"]),
+                    ],
+                    outputs: vec![param("add-r", "R", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: CLUSTER_OUTPUT.to_owned(),
+                    instance: "cluster-output".to_owned(),
+                    nickname: "y".to_owned(),
+                    inputs: vec![param("cluster-output-in", "y", &["add-r"])],
+                    ..GhObject::default()
+                },
+            ],
+            ..GhDocument::default()
+        };
+        let cluster = GhObject {
+            type_name: "Cluster".to_owned(),
+            instance: "cluster".to_owned(),
+            nickname: "twice".to_owned(),
+            inputs: vec![param("cluster-in", "x", &[])],
+            outputs: vec![param("cluster-out", "y", &[])],
+            ..GhObject::default()
+        };
+        let limits = Limits::default();
+        let mut m = Mapper::new(&registry, &limits, Graph::default(), Vec::new());
+        m.map_cluster(&cluster, object_ref(&cluster, ""), "", 0, &inner);
+        m.wire();
+        let mut graph = m.finish().graph;
+        let node = &graph.nodes[0];
+        assert_eq!(
+            (node.id.0.as_str(), node.node_type.as_str()),
+            ("twice", "graph")
+        );
+        let Some(SubGraph::Inline(body)) = &node.subgraph else {
+            panic!("an inline sub-graph: {node:?}");
+        };
+        assert_eq!(body.inputs[0].name, "x");
+        assert_eq!(body.outputs[0].name, "y");
+        let text = graph.to_ron();
+        assert!(text.contains("graph: ("), "{text}");
+        // It checks and runs once given an input.
+        graph.nodes[0]
+            .values
+            .push(("x".to_owned(), Literal("[1, 2]".to_owned())));
+        graph.format = locus_runtime::FORMAT_VERSION;
+        graph.outputs.push(GraphOutput {
+            name: "y".to_owned(),
+            source: PortRef {
+                node: NodeId("twice".to_owned()),
+                port: "y".to_owned(),
+            },
+        });
+        let checked = check(&graph, &registry).unwrap_or_else(|d| panic!("{d:#?}\n{text}"));
+        let mut e = Evaluator::new(checked.plan);
+        e.evaluate();
+        assert_eq!(
+            e.output("y"),
+            Some(&DataTree::from_items(vec![2.0_f64, 4.0])),
+            "{:?}",
+            e.messages().collect::<Vec<_>>()
+        );
     }
 }

@@ -24,6 +24,7 @@ pub(crate) fn check_before_run(
         severity: Severity::Error,
         kind,
         location: doc.zip(offset).map(|(d, o)| d.location(o)),
+        file: None,
     };
     for (i, node) in plan.nodes.iter().enumerate() {
         let Some(graph_node) = graph.nodes.get(i) else {

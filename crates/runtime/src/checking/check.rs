@@ -15,6 +15,7 @@ use petgraph::graph::{DiGraph, NodeIndex};
 
 use crate::checking::before_run::check_before_run;
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location, PortDirection, Severity};
+use crate::checking::subgraph::{Nesting, check_nested};
 use crate::file::expected::ExpectedTree;
 use crate::file::format::{Document, SourceMap};
 use crate::file::literal::{LiteralError, tree_from_node, value_from_node};
@@ -42,7 +43,7 @@ pub struct Checked {
 /// # Errors
 /// Every diagnostic (errors and warnings, in file order) when there is at least one error.
 pub fn check(graph: &Graph, registry: &NodeRegistry) -> Result<Checked, Vec<Diagnostic>> {
-    Checker::new(graph, None, registry).run()
+    check_nested(graph, None, registry, &mut Nesting::default())
 }
 
 /// Reads and checks a graph file.
@@ -60,7 +61,7 @@ impl Document {
     /// # Errors
     /// Every diagnostic (errors and warnings, in file order) when there is at least one error.
     pub fn check(&self, registry: &NodeRegistry) -> Result<Checked, Vec<Diagnostic>> {
-        Checker::new(self.graph(), Some(self), registry).run()
+        check_nested(self.graph(), Some(self), registry, &mut Nesting::default())
     }
 }
 
@@ -72,7 +73,7 @@ struct Resolved<'r> {
     outputs: Vec<Port>,
 }
 
-struct Checker<'a> {
+pub(crate) struct Checker<'a> {
     graph: &'a Graph,
     doc: Option<&'a Document>,
     registry: &'a NodeRegistry,
@@ -99,10 +100,17 @@ struct Checker<'a> {
     named_targets: Vec<Vec<Option<usize>>>,
     /// Wires between resolved ports, as (from node, to node).
     edges: Vec<(usize, usize)>,
+    /// The sub-graph nodes, by index: the node type standing for the sub-graph, or `None`
+    /// when the sub-graph has errors (reported already, so the node is left unresolved).
+    subgraphs: HashMap<usize, Option<&'a NodeType>>,
 }
 
 impl<'a> Checker<'a> {
-    fn new(graph: &'a Graph, doc: Option<&'a Document>, registry: &'a NodeRegistry) -> Self {
+    pub(crate) fn new(
+        graph: &'a Graph,
+        doc: Option<&'a Document>,
+        registry: &'a NodeRegistry,
+    ) -> Self {
         Self {
             graph,
             doc,
@@ -119,7 +127,17 @@ impl<'a> Checker<'a> {
             settings: Vec::new(),
             named_targets: Vec::new(),
             edges: Vec::new(),
+            subgraphs: HashMap::new(),
         }
+    }
+
+    /// The checker with the node types of the graph's sub-graph nodes (`checking/subgraph.rs`).
+    pub(crate) fn with_subgraphs(
+        mut self,
+        subgraphs: HashMap<usize, Option<&'a NodeType>>,
+    ) -> Self {
+        self.subgraphs = subgraphs;
+        self
     }
 
     fn map(&self) -> Option<&'a SourceMap> {
@@ -136,6 +154,7 @@ impl<'a> Checker<'a> {
             severity,
             kind,
             location,
+            file: None,
         });
     }
 
@@ -152,7 +171,7 @@ impl<'a> Checker<'a> {
         self.map()?.nodes.get(i).map(|n| n.id.start)
     }
 
-    fn run(mut self) -> Result<Checked, Vec<Diagnostic>> {
+    pub(crate) fn run(mut self) -> Result<Checked, Vec<Diagnostic>> {
         self.nodes();
         for i in 0..self.graph.nodes.len() {
             self.node_values(i);

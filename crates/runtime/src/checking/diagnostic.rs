@@ -266,6 +266,21 @@ pub enum DiagnosticKind {
         /// Why.
         message: String,
     },
+    /// A sub-graph node whose graph cannot be used: a `path` that cannot be read or is not
+    /// allowed here, a nesting or size limit reached, a port it cannot take.
+    SubGraph {
+        /// The sub-graph node.
+        node: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A graph file that includes itself, directly or through other files.
+    SubGraphCycle {
+        /// The sub-graph node that closes the chain.
+        node: String,
+        /// The files of the chain, the first repeated at the end.
+        files: Vec<String>,
+    },
 }
 
 fn quoted_list(items: &[String]) -> String {
@@ -286,7 +301,8 @@ impl fmt::Display for DiagnosticKind {
             ),
             InvalidNodeId { node } => write!(
                 f,
-                "invalid node id \"{node}\" (ids are non-empty and have no dots, quotes or spaces)"
+                "invalid node id \"{node}\" (ids are non-empty and have no dots, slashes, quotes \
+                 or spaces; a slash separates a sub-graph's id from its nodes' ids)"
             ),
             DuplicateNodeId { node, first_line } => {
                 write!(f, "duplicate node id \"{node}\"")?;
@@ -456,6 +472,12 @@ impl fmt::Display for DiagnosticKind {
                     write!(f, "(outputs: {})", quoted_list(valid))
                 }
             }
+            SubGraph { node, message } => write!(f, "sub-graph \"{node}\": {message}"),
+            SubGraphCycle { node, files } => write!(
+                f,
+                "sub-graph \"{node}\" includes itself: {}",
+                files.join(" -> ")
+            ),
             BadExpected { name, message } => {
                 write!(f, "bad expected value for output \"{name}\": {message}")
             }
@@ -472,6 +494,9 @@ pub struct Diagnostic {
     pub kind: DiagnosticKind,
     /// Where in the file, when the graph was read from text.
     pub location: Option<Location>,
+    /// The file the location is in, when it is not the file checked but one of its
+    /// sub-graphs' (`parts/x.ron`, relative to the checked file's directory).
+    pub file: Option<String>,
 }
 
 impl Diagnostic {
@@ -481,6 +506,7 @@ impl Diagnostic {
             severity: Severity::Error,
             kind,
             location: None,
+            file: None,
         }
     }
 
@@ -490,6 +516,7 @@ impl Diagnostic {
             severity: Severity::Warning,
             kind,
             location: None,
+            file: None,
         }
     }
 
@@ -522,7 +549,9 @@ impl Diagnostic {
             | BadInputNames { node, .. }
             | ModifierNotApplicable { node, .. }
             | ConflictingModifiers { node, .. }
-            | SeveralPrincipalInputs { node, .. } => Some(node),
+            | SeveralPrincipalInputs { node, .. }
+            | SubGraph { node, .. }
+            | SubGraphCycle { node, .. } => Some(node),
             Cycle { nodes } => nodes.first().map(String::as_str),
             _ => None,
         }
@@ -544,6 +573,46 @@ impl Diagnostic {
         }
     }
 
+    /// The diagnostic of a sub-graph's checking, seen from the graph that includes it as node
+    /// `node`: the node ids it names become nested ids (`node/inner`), and `file` (the
+    /// sub-graph's file, when it has one of its own) becomes its file unless it has a deeper one.
+    pub(crate) fn nest(mut self, node: &str, file: Option<&str>) -> Self {
+        use DiagnosticKind::*;
+        let id = |s: &mut String| *s = format!("{node}/{s}");
+        match &mut self.kind {
+            InvalidNodeId { node }
+            | DuplicateNodeId { node, .. }
+            | UnknownNodeType { node, .. }
+            | UnknownNode { node, .. }
+            | UnknownPort { node, .. }
+            | WrongDirection { node, .. }
+            | MissingInput { node, .. }
+            | UnsetGraphInput { node, .. }
+            | ValueIgnored { node, .. }
+            | BadValue { node, .. }
+            | UnknownSetting { node, .. }
+            | BadSetting { node, .. }
+            | BadInputNames { node, .. }
+            | ModifierNotApplicable { node, .. }
+            | ConflictingModifiers { node, .. }
+            | SeveralPrincipalInputs { node, .. }
+            | SubGraph { node, .. }
+            | SubGraphCycle { node, .. } => id(node),
+            IncompatibleWire { from, to, .. } | DuplicateWire { from, to } => {
+                id(from);
+                id(to);
+            }
+            Cycle { nodes } => nodes.iter_mut().for_each(id),
+            _ => {}
+        }
+        self.file = match (self.file.take(), file) {
+            (Some(inner), Some(outer)) => Some(relative_to_file(outer, &inner)),
+            (None, Some(outer)) => Some(outer.to_owned()),
+            (inner, None) => inner,
+        };
+        self
+    }
+
     /// A printable form that starts with the file name: `graph.ron:12:5: error: …`.
     pub fn display_in<'a>(&'a self, file: &'a str) -> impl fmt::Display + 'a {
         InFile {
@@ -556,10 +625,22 @@ impl Diagnostic {
 impl fmt::Display for Diagnostic {
     /// Prints `12:5: error: message`, or `error: message` without location.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(l) = self.location {
-            write!(f, "{}:{}: ", l.line, l.column)?;
+        match (&self.file, self.location) {
+            (Some(file), Some(l)) => write!(f, "{file}:{}:{}: ", l.line, l.column)?,
+            (Some(file), None) => write!(f, "{file}: ")?,
+            (None, Some(l)) => write!(f, "{}:{}: ", l.line, l.column)?,
+            (None, None) => {}
         }
         write!(f, "{}: {}", self.severity.name(), self.kind)
+    }
+}
+
+/// `path`, given relative to the directory of `file`, as a path like `file` (`a/b.ron` and
+/// `parts/c.ron` give `a/parts/c.ron`).
+fn relative_to_file(file: &str, path: &str) -> String {
+    match std::path::Path::new(file).parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir.join(path).display().to_string(),
+        _ => path.to_owned(),
     }
 }
 
@@ -570,9 +651,17 @@ struct InFile<'a> {
 
 impl fmt::Display for InFile<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.diagnostic.location {
-            Some(_) => write!(f, "{}:{}", self.file, self.diagnostic),
-            None => write!(f, "{}: {}", self.file, self.diagnostic),
+        let d = self.diagnostic;
+        match (&d.file, d.location) {
+            // A sub-graph file's diagnostic names that file, relative to the checked one's
+            // directory.
+            (Some(sub), _) => {
+                let mut d = d.clone();
+                d.file = Some(relative_to_file(self.file, sub));
+                write!(f, "{d}")
+            }
+            (None, Some(_)) => write!(f, "{}:{}", self.file, d),
+            (None, None) => write!(f, "{}: {}", self.file, d),
         }
     }
 }

@@ -7,6 +7,8 @@
 //! expected value per line. Reading a canonical file and writing it again gives the same bytes.
 
 use std::ops::Range;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::checking::diagnostic::{Diagnostic, DiagnosticKind, Location};
 use crate::file::syntax::{self, Field, Kind, LineIndex, Node};
@@ -15,7 +17,7 @@ use crate::file::write::expected_node;
 pub use crate::file::write::write_graph;
 use crate::{
     ExpectedMessage, FORMAT_VERSION, Graph, GraphInput, GraphNode, GraphOutput, Level, Literal,
-    Matching, Modifier, NodeId, PortRef, Wire,
+    Matching, Modifier, NodeId, PortRef, SUBGRAPH_TYPE, SubGraph, Wire,
 };
 
 const GRAPH_FIELDS: &[&str] = &[
@@ -43,15 +45,20 @@ const NODE_FIELDS: &[&str] = &[
     "output_modifiers",
     "matching",
     "disabled",
+    "path",
+    "graph",
 ];
 
 /// A graph read from text, with the text and the position of everything in it.
 #[derive(Clone, Debug)]
 pub struct Document {
     graph: Graph,
-    source: String,
-    lines: LineIndex,
+    /// The whole text read (shared with the documents of inline sub-graphs).
+    source: Arc<str>,
+    lines: Arc<LineIndex>,
     pub(crate) map: SourceMap,
+    /// The file the text was read from, which sub-graph paths are relative to.
+    origin: Option<PathBuf>,
 }
 
 /// Byte spans of the parts of a graph file, parallel to the vectors of [`Graph`].
@@ -98,6 +105,10 @@ pub(crate) struct NodeSpans {
     pub modifiers: Vec<(Range<usize>, Vec<Range<usize>>)>,
     /// Per modified output: the port name and each modifier.
     pub output_modifiers: Vec<(Range<usize>, Vec<Range<usize>>)>,
+    /// The `path` or `graph` value of a sub-graph node.
+    pub body: Option<Range<usize>>,
+    /// The spans of an inline sub-graph.
+    pub subgraph: Option<Box<SourceMap>>,
 }
 
 impl Document {
@@ -128,12 +139,42 @@ impl Document {
         match graph {
             Some(graph) if reader.errors.is_empty() => Ok(Self {
                 graph,
-                source: text.to_owned(),
-                lines: reader.lines,
+                source: Arc::from(text),
+                lines: Arc::new(reader.lines),
                 map,
+                origin: None,
             }),
             _ => Err(reader.errors),
         }
+    }
+
+    /// The document with the file it was read from, which the `path` of its sub-graph nodes
+    /// are relative to (a document without one cannot use `path`).
+    #[must_use]
+    pub fn with_origin(mut self, path: impl Into<PathBuf>) -> Self {
+        self.origin = Some(path.into());
+        self
+    }
+
+    /// The file the document was read from, when known.
+    pub fn origin(&self) -> Option<&Path> {
+        self.origin.as_deref()
+    }
+
+    /// The document of the inline sub-graph of node `i`, sharing this one's text (so that its
+    /// diagnostics point into the same file).
+    pub(crate) fn inline_subgraph(&self, i: usize) -> Option<Self> {
+        let Some(SubGraph::Inline(graph)) = &self.graph.nodes.get(i)?.subgraph else {
+            return None;
+        };
+        let map = self.map.nodes.get(i)?.subgraph.as_deref()?.clone();
+        Some(Self {
+            graph: (**graph).clone(),
+            source: Arc::clone(&self.source),
+            lines: Arc::clone(&self.lines),
+            map,
+            origin: self.origin.clone(),
+        })
     }
 
     /// The graph.
@@ -187,7 +228,7 @@ impl Document {
                 }
                 format!("{}{}{}", &src[..span.start], section, &src[end..])
             }
-            None if section.is_empty() => src.clone(),
+            None if section.is_empty() => src.to_string(),
             None => {
                 let end = self.map.graph_end.min(src.len());
                 let before = src[..end].trim_end();
@@ -529,10 +570,51 @@ impl Reader<'_> {
                     Kind::Bool(b) => node.disabled = b,
                     _ => self.expect_kind(v, "true or false", "`disabled`"),
                 },
+                "path" => {
+                    let path = self.string(v, &format!("`path` of {context}"));
+                    node.subgraph = path.map(SubGraph::Path);
+                    spans.body = Some(v.span.clone());
+                }
+                "graph" => {
+                    let mut map = SourceMap::default();
+                    if let Some(graph) = self.graph(v, &mut map) {
+                        node.subgraph = Some(SubGraph::Inline(Box::new(graph)));
+                        spans.subgraph = Some(Box::new(map));
+                    }
+                    spans.body = Some(v.span.clone());
+                }
                 _ => {}
             }
         }
+        self.subgraph_fields(&node, fields, &context, item.span.start);
         (node, spans)
+    }
+
+    /// A sub-graph node has one of `path` and `graph`, and other nodes neither.
+    fn subgraph_fields(&mut self, node: &GraphNode, fields: &[Field], context: &str, at: usize) {
+        let body: Vec<&Field> = fields
+            .iter()
+            .filter(|f| f.name == "path" || f.name == "graph")
+            .collect();
+        let is_subgraph = node.node_type == SUBGRAPH_TYPE;
+        match body.as_slice() {
+            [] if is_subgraph => self.malformed(
+                at..at,
+                format!("{context} of type \"{SUBGRAPH_TYPE}\" needs `path` or `graph`"),
+            ),
+            [_, second, ..] if is_subgraph => self.malformed(
+                second.name_span.clone(),
+                format!("{context} has both `path` and `graph`; give one"),
+            ),
+            [first, ..] if !is_subgraph => self.malformed(
+                first.name_span.clone(),
+                format!(
+                    "`{}` is only for sub-graph nodes (type \"{SUBGRAPH_TYPE}\"), not {context}",
+                    first.name
+                ),
+            ),
+            _ => {}
+        }
     }
 
     /// One entry of `expected_messages`: `(node: "d", level: error, text: "by zero")`.

@@ -4,7 +4,9 @@
 //! `docs/graph-format.md`, "Canonical layout").
 
 use crate::file::syntax::{self, Field, Kind, Node};
-use crate::{ExpectedMessage, FORMAT_VERSION, Graph, GraphNode, Literal, Matching, Modifier};
+use crate::{
+    ExpectedMessage, FORMAT_VERSION, Graph, GraphNode, Literal, Matching, Modifier, SubGraph,
+};
 
 fn string_node(s: &str) -> Node {
     Node::new(Kind::Str(s.to_owned()))
@@ -90,6 +92,16 @@ fn node_node(node: &GraphNode) -> Node {
     if node.disabled {
         fields.push(field("disabled", Node::new(Kind::Bool(true))));
     }
+    match &node.subgraph {
+        None => {}
+        Some(SubGraph::Path(path)) => fields.push(field("path", string_node(path))),
+        Some(SubGraph::Inline(graph)) => {
+            fields.push(field(
+                "graph",
+                Node::new(Kind::Struct(None, graph_fields(graph))),
+            ));
+        }
+    }
     Node::new(Kind::Struct(None, fields))
 }
 
@@ -109,36 +121,21 @@ fn ident(name: &str) -> Node {
     Node::new(Kind::Ident(name.to_owned()))
 }
 
-/// Writes a graph in canonical layout (see the module docs).
-pub fn write_graph(graph: &Graph) -> String {
-    let mut out = String::from("(\n");
-    let scalar = |out: &mut String, name: &str, value: Node| {
-        let prefix = format!("    {name}: ");
-        out.push_str(&prefix);
-        syntax::write_pretty(&value, 4, prefix.len() - 4, 1, out);
-        out.push_str(",\n");
-    };
-    scalar(
-        &mut out,
+/// The fields of a graph in canonical order, defaults left out; `format` always.
+fn graph_fields(graph: &Graph) -> Vec<Field> {
+    let mut fields = vec![field(
         "format",
         Node::new(Kind::Number(FORMAT_VERSION.to_string())),
-    );
+    )];
     if !graph.name.is_empty() {
-        scalar(&mut out, "name", string_node(&graph.name));
+        fields.push(field("name", string_node(&graph.name)));
     }
     if !graph.description.is_empty() {
-        scalar(&mut out, "description", string_node(&graph.description));
+        fields.push(field("description", string_node(&graph.description)));
     }
-    let section = |out: &mut String, name: &str, value: Node| {
-        out.push_str("    ");
-        out.push_str(name);
-        out.push_str(": ");
-        syntax::write_broken(&value, 4, out);
-        out.push_str(",\n");
-    };
     if !graph.nodes.is_empty() {
         let nodes = graph.nodes.iter().map(node_node).collect();
-        section(&mut out, "nodes", Node::new(Kind::List(nodes)));
+        fields.push(field("nodes", Node::new(Kind::List(nodes))));
     }
     if !graph.wires.is_empty() {
         let wires = graph
@@ -154,7 +151,7 @@ pub fn write_graph(graph: &Graph) -> String {
                 ))
             })
             .collect();
-        section(&mut out, "wires", Node::new(Kind::List(wires)));
+        fields.push(field("wires", Node::new(Kind::List(wires))));
     }
     if !graph.inputs.is_empty() {
         let entries = graph
@@ -162,7 +159,7 @@ pub fn write_graph(graph: &Graph) -> String {
             .iter()
             .map(|i| (string_node(&i.name), string_node(&i.target.to_string())))
             .collect();
-        section(&mut out, "inputs", Node::new(Kind::Map(entries)));
+        fields.push(field("inputs", Node::new(Kind::Map(entries))));
     }
     if !graph.outputs.is_empty() {
         let entries = graph
@@ -170,14 +167,30 @@ pub fn write_graph(graph: &Graph) -> String {
             .iter()
             .map(|o| (string_node(&o.name), string_node(&o.source.to_string())))
             .collect();
-        section(&mut out, "outputs", Node::new(Kind::Map(entries)));
+        fields.push(field("outputs", Node::new(Kind::Map(entries))));
     }
     if !graph.expected.is_empty() {
-        section(&mut out, "expected", expected_node(&graph.expected));
+        fields.push(field("expected", expected_node(&graph.expected)));
     }
     if !graph.expected_messages.is_empty() {
         let messages = expected_messages_node(&graph.expected_messages);
-        section(&mut out, "expected_messages", messages);
+        fields.push(field("expected_messages", messages));
+    }
+    fields
+}
+
+/// Writes a graph in canonical layout (see the module docs): the scalar fields on one line
+/// when they fit, the lists and maps with one entry per line.
+pub fn write_graph(graph: &Graph) -> String {
+    let mut out = String::from("(\n");
+    for f in graph_fields(graph) {
+        let prefix = format!("    {}: ", f.name);
+        out.push_str(&prefix);
+        match f.value.kind {
+            Kind::List(_) | Kind::Map(_) => syntax::write_broken(&f.value, 4, &mut out),
+            _ => syntax::write_pretty(&f.value, 4, prefix.len() - 4, 1, &mut out),
+        }
+        out.push_str(",\n");
     }
     out.push_str(")\n");
     out

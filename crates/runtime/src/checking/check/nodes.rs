@@ -9,7 +9,7 @@ impl<'a> Checker<'a> {
         for (i, node) in graph.nodes.iter().enumerate() {
             let id = node.id.0.as_str();
             let at = self.node_offset(i);
-            if id.is_empty() || id.contains(['.', '"']) || id.contains(char::is_whitespace) {
+            if id.is_empty() || id.contains(['.', '"', '/']) || id.contains(char::is_whitespace) {
                 self.error(
                     DiagnosticKind::InvalidNodeId {
                         node: id.to_owned(),
@@ -32,9 +32,14 @@ impl<'a> Checker<'a> {
                     self.index.insert(id, i);
                 }
             }
-            let resolved = match self.registry.get(&node.node_type) {
-                Some(node_type) => Some(self.resolve_ports(i, node_type)),
-                None => {
+            let found = match self.subgraphs.get(&i) {
+                Some(sub) => Ok(*sub),
+                None => self.registry.get(&node.node_type).ok_or(()).map(Some),
+            };
+            let resolved = match found {
+                Ok(Some(node_type)) => Some(self.resolve_ports(i, node_type)),
+                Ok(None) => None,
+                Err(()) => {
                     let suggestions = self
                         .registry
                         .suggestions(&node.node_type)

@@ -277,7 +277,15 @@ impl<'a> Checker<'a> {
     /// Expected messages must name nodes of the graph.
     pub(super) fn expected_messages(&mut self) {
         for (e, m) in self.graph.expected_messages.iter().enumerate() {
-            if !self.index.contains_key(m.node.0.as_str()) {
+            // A nested id (`c/d`) is checked once the sub-graph is in place
+            // (`checking/subgraph.rs`).
+            let outer = m.node.0.split('/').next().unwrap_or_default();
+            let nested = m.node.0.contains('/')
+                && self
+                    .index
+                    .get(outer)
+                    .is_some_and(|i| self.subgraphs.contains_key(i));
+            if !nested && !self.index.contains_key(m.node.0.as_str()) {
                 let at = self.map().and_then(|map| map.expected_messages.get(e));
                 self.error(
                     DiagnosticKind::Malformed {
