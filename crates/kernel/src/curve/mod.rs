@@ -18,6 +18,7 @@ pub(crate) mod circle;
 pub(crate) mod closest_point;
 pub(crate) mod containment;
 pub(crate) mod continuity;
+pub(crate) mod ellipse;
 pub(crate) mod equidistant;
 pub(crate) mod extend;
 pub(crate) mod frames;
