@@ -57,6 +57,7 @@ pub use crate::curve::continuity::{
     continuity_with_tolerances,
 };
 pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
+pub use crate::curve::fillet::{CurveFillet, SharpCorner};
 pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
 pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::hermite::CubicHermite;
