@@ -58,6 +58,7 @@ pub use crate::curve::continuity::{
 };
 pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
 pub use crate::curve::fillet::{CurveFillet, SharpCorner};
+pub use crate::curve::fit::MAX_FIT_SPANS;
 pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
 pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::hermite::CubicHermite;

@@ -22,6 +22,7 @@ pub(crate) mod ellipse;
 pub(crate) mod equidistant;
 pub(crate) mod extend;
 pub(crate) mod fillet;
+pub(crate) mod fit;
 pub(crate) mod frames;
 pub(crate) mod hermite;
 pub(crate) mod join;
