@@ -1,5 +1,6 @@
 //! Filleting the corners of a curve with arcs of one radius (Grasshopper's *Fillet* with a
-//! curve and a radius, Rhino's `Curve.CreateFilletCornersCurve`).
+//! curve and a radius, Rhino's `Curve.CreateFilletCornersCurve`), or with arcs that start a
+//! given distance from each corner (Grasshopper's *Fillet Distance*).
 //!
 //! The curve is cut at its kinks (tangent breaks above [`KINK_ANGLE_TOLERANCE`], and the seam
 //! of a closed curve when it is one) into smooth pieces. At each corner, between the piece
@@ -9,7 +10,9 @@
 //! tangent, the centre seen from `A` at `s` is `A(s) + r n̂ × T_A(s)`, seen from `B` at `t` it is
 //! `B(t) + r n̂ × T_B(t)`, and Gauss–Newton on `(s, t)` makes the two agree. Straight pieces
 //! converge in one step to the classical `r tan(φ/2)` set-back from the corner (`φ` the turning
-//! angle). The arc runs from `A(s)` to `B(t)`, leaving along `T_A(s)`.
+//! angle). The arc runs from `A(s)` to `B(t)`, leaving along `T_A(s)`. Filleting by distance
+//! takes at each corner the radius `d / tan(φ/2)` whose set-back is `d`, exactly `d` along
+//! straight pieces and close to it along curved ones.
 //!
 //! A corner whose arc does not fit is left sharp and reported: when the arc would need more of
 //! a piece than it has (the radius is too large for the segments beside the corner, or the
@@ -62,7 +65,7 @@ fn derivatives(c: &Curve, u: f64) -> (Point3, Vector3, Vector3) {
 fn centre_and_derivative(c: &Curve, u: f64, normal: Vector3, r: f64) -> Option<(Point3, Vector3)> {
     let (p, d1, d2) = derivatives(c, u);
     let speed = d1.length();
-    if !(speed > 0.0) || !speed.is_finite() {
+    if !(speed.is_finite() && speed > 0.0) {
         return None;
     }
     let t = d1 * (1.0 / speed);
@@ -71,11 +74,18 @@ fn centre_and_derivative(c: &Curve, u: f64, normal: Vector3, r: f64) -> Option<(
     Some((p + normal.cross(t) * r, d1 + normal.cross(dt) * r))
 }
 
-/// Solves for the fillet of radius `r` between the end of `a` and the start of `b`.
+/// How big the fillets are: one radius, or one distance from each corner to the arc's ends.
+#[derive(Clone, Copy)]
+enum FilletSize {
+    Radius(f64),
+    Distance(f64),
+}
+
+/// Solves for the fillet of the given size between the end of `a` and the start of `b`.
 fn corner_fillet(
     a: &Curve,
     b: &Curve,
-    r: f64,
+    size: FilletSize,
     tolerance: f64,
 ) -> std::result::Result<CornerFillet, String> {
     let (da, db) = (a.domain(), b.domain());
@@ -88,8 +98,12 @@ fn corner_fillet(
         return Err("the curve turns straight back on itself there".into());
     };
     let phi = ta.dot(tb).clamp(-1.0, 1.0).acos();
+    let r = match size {
+        FilletSize::Radius(r) => r,
+        FilletSize::Distance(d) => d / (phi / 2.0).tan(),
+    };
     let setback = r * (phi / 2.0).tan();
-    if !setback.is_finite() {
+    if !setback.is_finite() || !r.is_finite() {
         return Err("the curve turns straight back on itself there".into());
     }
     // Start where straight pieces would have the tangent points.
@@ -114,7 +128,7 @@ fn corner_fillet(
         let (m11, m12, m22) = (ja.dot(ja), ja.dot(jb), jb.dot(jb));
         let (g1, g2) = (ja.dot(f), jb.dot(f));
         let det = m11 * m22 - m12 * m12;
-        if !(det.abs() > 1e-300) {
+        if !(det.is_finite() && det.abs() > 1e-300) {
             break;
         }
         let ds = -(m22 * g1 - m12 * g2) / det;
@@ -173,6 +187,27 @@ impl Curve {
                 "fillet radius {radius} is not a non-negative number"
             )));
         }
+        self.fillet_with(FilletSize::Radius(radius), tolerance)
+    }
+
+    /// As [`Curve::fillet_corners`], with at each corner the arc whose ends lie `distance` from
+    /// the corner (exactly along straight pieces), so of radius `distance / tan(φ/2)` for a
+    /// turn of `φ`.
+    ///
+    /// # Errors
+    /// As [`Curve::fillet_corners`], for a negative or non-finite distance.
+    pub fn fillet_corners_by_distance(&self, distance: f64, tolerance: f64) -> Result<CurveFillet> {
+        if !distance.is_finite() || distance < 0.0 {
+            return Err(Error::InvalidInput(format!(
+                "fillet distance {distance} is not a non-negative number"
+            )));
+        }
+        self.fillet_with(FilletSize::Distance(distance), tolerance)
+    }
+
+    /// The fillets of every corner, of the given size.
+    fn fillet_with(&self, size: FilletSize, tolerance: f64) -> Result<CurveFillet> {
+        let (FilletSize::Radius(radius) | FilletSize::Distance(radius)) = size;
         if !tolerance.is_finite() || tolerance <= 0.0 {
             return Err(Error::InvalidInput(format!(
                 "fillet tolerance {tolerance} is not a positive distance"
@@ -190,7 +225,9 @@ impl Curve {
         let closed = self.is_closed();
         let seam_kink = closed
             && match (self.tangent_from_left(d.t1)?, self.tangent_at(d.t0)) {
-                (Some(end), Some(start)) => end.angle_to(start).is_ok_and(|a| a > KINK_ANGLE_TOLERANCE),
+                (Some(end), Some(start)) => {
+                    end.angle_to(start).is_ok_and(|a| a > KINK_ANGLE_TOLERANCE)
+                }
                 _ => true,
             };
         if radius == 0.0 || (kinks.is_empty() && !seam_kink) {
@@ -219,7 +256,7 @@ impl Curve {
             let before = (k + n - 1) % n;
             let (a, b) = (&pieces[before], &pieces[k]);
             let point = b.start_point();
-            let fillet = corner_fillet(a, b, radius, tolerance).and_then(|f| {
+            let fillet = corner_fillet(a, b, size, tolerance).and_then(|f| {
                 let slack = 1e-12 * (1.0 + f.s.abs().max(f.t.abs()));
                 if f.s < free[before].t0 - slack || f.t > free[k].t1 + slack {
                     Err("the radius is too large for the segments beside it".into())
@@ -256,7 +293,11 @@ impl Curve {
             let iv = free[k];
             let dk = piece.domain();
             if iv.t1 - iv.t0 > 1e-12 * (1.0 + dk.t0.abs().max(dk.t1.abs())) {
-                let part = if iv == dk { piece.clone() } else { piece.trim(iv)? };
+                let part = if iv == dk {
+                    piece.clone()
+                } else {
+                    piece.trim(iv)?
+                };
                 if part.length() > tolerance * 1e-3 {
                     parts.push(part);
                 }
@@ -362,6 +403,29 @@ mod tests {
     }
 
     #[test]
+    fn fillets_by_distance_start_that_far_from_the_corners() {
+        // A right angle and a 135° turn: set-backs of 1 on every straight side.
+        let c = polyline(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 0.0)]);
+        let f = c.fillet_corners_by_distance(1.0, 1e-9).unwrap();
+        assert!(f.sharp.is_empty(), "{:?}", f.sharp);
+        assert!(f.curve.kinks(KINK_ANGLE_TOLERANCE).unwrap().is_empty());
+        // Straight parts: 4 − 1 − 1, 4 − 1 − 1, √32 − 1 − 1; arcs r φ with r = 1 / tan(φ/2).
+        let arcs: f64 = [FRAC_PI_2, 0.75 * PI, 0.75 * PI]
+            .iter()
+            .map(|phi| phi / (phi / 2.0).tan())
+            .sum();
+        let expected = 2.0 + 2.0 + (32.0f64.sqrt() - 2.0) + arcs;
+        assert!(
+            (f.curve.length() - expected).abs() < 1e-9,
+            "{}",
+            f.curve.length()
+        );
+        assert!(c.fillet_corners_by_distance(-1.0, 1e-9).is_err());
+        let f = c.fillet_corners_by_distance(3.0, 1e-9).unwrap();
+        assert!(!f.sharp.is_empty());
+    }
+
+    #[test]
     fn cusp_is_reported() {
         let c = polyline(&[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0)]);
         let f = c.fillet_corners(0.1, 1e-9).unwrap();
@@ -390,7 +454,10 @@ mod tests {
         // (1 inside the circle): (−1, √8).
         let centre = p(-1.0, 8.0f64.sqrt());
         let on_line = f.curve.closest_point(centre).unwrap();
-        assert!((on_line.point.distance(centre) - 1.0).abs() < 1e-7, "{on_line:?}");
+        assert!(
+            (on_line.point.distance(centre) - 1.0).abs() < 1e-7,
+            "{on_line:?}"
+        );
     }
 
     proptest! {
