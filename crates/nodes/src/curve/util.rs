@@ -1,4 +1,4 @@
-//! Curve › Util: Flip Curve, Split Curve, Fillet, Seam and Fit Curve.
+//! Curve › Util: Flip Curve, Split Curve, Fillet, Fillet Distance, Seam and Fit Curve.
 
 use locus_kernel::Curve;
 use locus_kernel::tolerance::{DEFAULT_TOLERANCE, DOCUMENT_TOLERANCE};
@@ -12,6 +12,8 @@ pub const FLIP_CURVE: &str = "curve.flip_curve";
 pub const SPLIT_CURVE: &str = "curve.split_curve";
 /// Id of [`fillet`].
 pub const FILLET: &str = "curve.fillet";
+/// Id of [`fillet_distance`].
+pub const FILLET_DISTANCE: &str = "curve.fillet_distance";
 /// Id of [`seam`].
 pub const SEAM: &str = "curve.seam";
 /// Id of [`fit_curve`].
@@ -22,7 +24,14 @@ const DIRECTION_SAMPLES: usize = 16;
 
 /// Registers the utility nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [flip_curve(), split_curve(), fillet(), seam(), fit_curve()] {
+    for t in [
+        flip_curve(),
+        split_curve(),
+        fillet(),
+        fillet_distance(),
+        seam(),
+        fit_curve(),
+    ] {
         registry.register(t);
     }
 }
@@ -148,14 +157,57 @@ pub fn fillet() -> NodeType {
                 .into());
             }
             let res = curve.fillet_corners(radius, DEFAULT_TOLERANCE)?;
-            for corner in &res.sharp {
-                let p = corner.point;
-                s.warning(format!(
-                    "corner {} at ({}, {}, {}) left sharp: {}",
-                    corner.index, p.x, p.y, p.z, corner.reason
-                ));
+            set_fillet(s, res);
+            Ok(())
+        })
+}
+
+/// Writes a fillet's curve to output 0, with a warning for each corner left sharp.
+fn set_fillet(s: &mut locus_runtime::Solve<'_>, res: locus_kernel::CurveFillet) {
+    for corner in &res.sharp {
+        let p = corner.point;
+        s.warning(format!(
+            "corner {} at ({}, {}, {}) left sharp: {}",
+            corner.index, p.x, p.y, p.z, corner.reason
+        ));
+    }
+    s.set(0, Shared::new(res.curve));
+}
+
+/// Fillet Distance \[Fillet\]: every corner of a curve rounded by an arc starting a distance
+/// from it.
+pub fn fillet_distance() -> NodeType {
+    util(FILLET_DISTANCE, "Fillet Distance", "Fillet")
+        .gh_guid("6fb21315-a032-400e-a80f-248687f5507f")
+        .description(
+            "Rounds the sharp corners of a curve as Fillet does, but sizes each fillet by the \
+             distance from the corner to where the arc starts and ends, rather than by its \
+             radius: a turn of φ gets the radius D / tan(φ/2), so the arc leaves a straight \
+             segment exactly D before the corner (close to D along curved pieces). Corners \
+             whose arc does not fit stay sharp, with a warning naming them (corner k is where \
+             the k-th smooth piece starts, the vertex k of a polyline). A distance of 0 gives \
+             the curve unchanged.",
+        )
+        .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to fillet."))
+        .input(
+            Port::new("Distance", "D", DataType::Number)
+                .doc("Distance from each corner to the start of its fillet, in model units, zero or positive. Default 1.")
+                .default_value(1.0),
+        )
+        .output(
+            Port::new("Curve", "C", DataType::Curve).doc("The curve with its corners filleted."),
+        )
+        .solve(|s| {
+            let curve = curve_input(s, 0)?;
+            let distance = *s.item::<f64>(1)?;
+            if !distance.is_finite() || distance < 0.0 {
+                return Err(format!(
+                    "input D: the distance must be zero or a positive number, got {distance}"
+                )
+                .into());
             }
-            s.set(0, Shared::new(res.curve));
+            let res = curve.fillet_corners_by_distance(distance, DEFAULT_TOLERANCE)?;
+            set_fillet(s, res);
             Ok(())
         })
 }
@@ -356,9 +408,29 @@ mod tests {
         let warnings = messages(&r, locus_runtime::Level::Warning);
         assert_eq!(
             warnings,
-            ["corner 1 at (1, 0, 0) left sharp: the radius is too large for the segments beside it"]
+            [
+                "corner 1 at (1, 0, 0) left sharp: the radius is too large for the segments beside it"
+            ]
         );
         assert_eq!(curves(&r.outputs[0]).len(), 1);
+    }
+
+    #[test]
+    fn fillet_distance_sets_back_by_the_distance() {
+        let rect = polyline(&[(0.0, 0.0), (6.0, 0.0), (6.0, 4.0), (0.0, 4.0), (0.0, 0.0)]);
+        let r = NodeCall::new(&fillet_distance())
+            .input(curve_tree(rect.clone()))
+            .input(DataTree::from_item(0.5))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        // Right angles: radius 0.5, sides shortened by 1 each, four quarter circles.
+        let c = curves(&r.outputs[0])[0].clone();
+        assert!((c.length() - (16.0 + std::f64::consts::PI)).abs() < 1e-9);
+        let r = NodeCall::new(&fillet_distance())
+            .input(curve_tree(rect))
+            .input(DataTree::from_item(-0.5))
+            .run();
+        assert!(single_error(&r).contains("input D"), "{:?}", r.messages);
     }
 
     #[test]
@@ -388,11 +460,23 @@ mod tests {
         let out = curves(&r.outputs[0]);
         assert_eq!(out[0].start_point(), Point3::new(1.0, 1.0, 0.0));
         assert_eq!(out[0].domain(), Interval::new(2.0, 6.0));
-        assert!(close(out[1].start_point(), Point3::new(1.0, 0.5, 0.0), 1e-15));
-        assert!(close(out[1].point_at(2.0), Point3::new(1.0, 1.0, 0.0), 1e-15));
+        assert!(close(
+            out[1].start_point(),
+            Point3::new(1.0, 0.5, 0.0),
+            1e-15
+        ));
+        assert!(close(
+            out[1].point_at(2.0),
+            Point3::new(1.0, 1.0, 0.0),
+            1e-15
+        ));
         // 6 is 2 modulo the period 4, with the domain starting at 6.
         assert_eq!(out[2].domain(), Interval::new(6.0, 10.0));
-        assert!(close(out[2].start_point(), Point3::new(1.0, 1.0, 0.0), 1e-15));
+        assert!(close(
+            out[2].start_point(),
+            Point3::new(1.0, 1.0, 0.0),
+            1e-15
+        ));
         assert_eq!(*out[3], square);
         for c in &out {
             assert!(c.is_closed());
@@ -424,13 +508,13 @@ mod tests {
     #[test]
     fn fit_curve_keeps_the_degree_or_takes_another() {
         let circle = Circle::new(Plane::WORLD_XY, 5.0).unwrap();
-        let r = NodeCall::new(&fit_curve())
-            .input(curve_tree(circle))
-            .run();
+        let r = NodeCall::new(&fit_curve()).input(curve_tree(circle)).run();
         assert!(r.messages.is_empty(), "{:?}", r.messages);
         let c = curves(&r.outputs[0])[0].clone();
         assert_eq!(c.degree(), 2);
-        let Curve::Nurbs(n) = &*c else { panic!("{c:?}") };
+        let Curve::Nurbs(n) = &*c else {
+            panic!("{c:?}")
+        };
         assert!(!n.is_rational());
         for k in 0..50 {
             let t = c.domain().parameter_at(k as f64 / 50.0);
