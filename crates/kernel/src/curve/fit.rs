@@ -42,7 +42,7 @@ fn solve_band(mut band: Vec<Vec<f64>>, w: usize, mut rhs: Vec<[f64; 3]>) -> Opti
                 }
             }
             if k == 0 {
-                if !(sum > 0.0) {
+                if !(sum.is_finite() && sum > 0.0) {
                     return None;
                 }
                 band[r][0] = sum.sqrt();
@@ -126,9 +126,7 @@ fn least_squares(
             }
         }
     }
-    let solved = solve_band(band, degree, rhs).ok_or(Error::NoConvergence {
-        what: "curve fit",
-    })?;
+    let solved = solve_band(band, degree, rhs).ok_or(Error::NoConvergence { what: "curve fit" })?;
     let mut cvs = Vec::with_capacity(n);
     cvs.push(first);
     cvs.extend(solved.into_iter().map(|[x, y, z]| Point3::new(x, y, z)));
@@ -151,7 +149,7 @@ impl Curve {
                 reason: format!("a fitted curve has a degree from 1 to {MAX_DEGREE}"),
             });
         }
-        if !(tolerance > 0.0) || !tolerance.is_finite() {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(Error::InvalidInput(format!(
                 "fit tolerance {tolerance} is not a positive distance"
             )));

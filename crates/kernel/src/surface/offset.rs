@@ -90,7 +90,7 @@ impl NurbsSurface {
                 what: "offset distance",
             });
         }
-        if !(tolerance > 0.0) || !tolerance.is_finite() {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(Error::InvalidInput(format!(
                 "offset tolerance {tolerance} is not a positive distance"
             )));
@@ -182,10 +182,7 @@ mod tests {
         .unwrap();
         let o = s.offset(1.5, 1e-9).unwrap();
         for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 1.0)] {
-            let (u, v) = (
-                o.domain_u().parameter_at(u),
-                o.domain_v().parameter_at(v),
-            );
+            let (u, v) = (o.domain_u().parameter_at(u), o.domain_v().parameter_at(v));
             let p = o.point_at(u, v);
             assert!((p.z - 1.5).abs() < 1e-12, "{p:?}");
             assert!(p.distance(s.point_at(u, v) + Vector3::new(0.0, 0.0, 1.5)) < 1e-12);

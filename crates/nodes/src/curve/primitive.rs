@@ -300,7 +300,11 @@ mod tests {
         let c = curves(&r.outputs[0])[0].clone();
         assert_eq!(c.domain(), Interval::new(0.0, std::f64::consts::TAU));
         assert!(c.is_closed());
-        assert!(close(c.point_at(FRAC_PI_2), Point3::new(0.0, 3.0, 0.0), 1e-14));
+        assert!(close(
+            c.point_at(FRAC_PI_2),
+            Point3::new(0.0, 3.0, 0.0),
+            1e-14
+        ));
         assert_eq!(
             values(&r.outputs[1]),
             vec![Some(Value::Point(Point3::new(4.0, 0.0, 0.0)))]

@@ -277,7 +277,11 @@ pub fn smooth_numbers() -> NodeType {
             let tree = s.tree(0)?.clone();
             let nans = tree
                 .values()
-                .filter(|v| v.as_ref().and_then(|v| v.get::<f64>()).is_some_and(f64::is_nan))
+                .filter(|v| {
+                    v.as_ref()
+                        .and_then(|v| v.get::<f64>())
+                        .is_some_and(f64::is_nan)
+                })
                 .count();
             if nans > 0 {
                 s.warning(format!("input N: {nans} NaN item(s) passed on unchanged"));
