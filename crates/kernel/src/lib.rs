@@ -55,8 +55,11 @@ pub use crate::curve::continuity::{
     Continuity, ContinuityTolerances, DERIVATIVE_TOLERANCE, ParametricContinuity, continuity,
     continuity_with_tolerances,
 };
+pub use crate::curve::ellipse::Ellipse;
 pub use crate::curve::equidistant::EQUIDISTANT_SAMPLES;
 pub use crate::curve::extend::{CurveExtension, EXTENSION_LENGTH_TOLERANCE};
+pub use crate::curve::fillet::{CurveFillet, SharpCorner};
+pub use crate::curve::fit::MAX_FIT_SPANS;
 pub use crate::curve::frames::{MAX_FRAME_STEPS, MAX_STEP_TURN, MIN_STEPS_PER_SPAN};
 pub use crate::curve::hermite::CubicHermite;
 pub use crate::curve::kinks::KINK_ANGLE_TOLERANCE;
@@ -105,5 +108,6 @@ pub use crate::surface::derivatives::SurfaceDerivatives;
 pub use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 pub use crate::surface::forms::{Cone, Cylinder, Sphere};
 pub use crate::surface::loft::{LoftType, MAX_LOFT_SECTIONS};
+pub use crate::surface::offset::MAX_OFFSET_GRID;
 pub use crate::surface::sweep::MAX_SWEEP_SPANS;
 pub use crate::transform::Transform;

@@ -20,6 +20,7 @@ pub(crate) mod grid;
 pub(crate) mod isocurve;
 pub(crate) mod loft;
 pub(crate) mod normal;
+pub(crate) mod offset;
 pub(crate) mod revolution;
 pub(crate) mod ruled;
 pub(crate) mod sweep;

@@ -1,9 +1,9 @@
-//! Curve › Primitive: Line, Circle and Arc.
+//! Curve › Primitive: Line, Circle, Arc and Ellipse.
 
 use std::f64::consts::PI;
 
-use locus_kernel::{Arc, Circle, Interval, Line, Plane, Point3};
-use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
+use locus_kernel::{Arc, Circle, Curve, Ellipse, Interval, Line, Plane, Point3};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
 
 /// Id of [`line`].
 pub const LINE: &str = "curve.line";
@@ -11,10 +11,12 @@ pub const LINE: &str = "curve.line";
 pub const CIRCLE: &str = "curve.circle";
 /// Id of [`arc`].
 pub const ARC: &str = "curve.arc";
+/// Id of [`ellipse`].
+pub const ELLIPSE: &str = "curve.ellipse";
 
 /// Registers the primitive nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [line(), circle(), arc()] {
+    for t in [line(), circle(), arc(), ellipse()] {
         registry.register(t);
     }
 }
@@ -122,6 +124,69 @@ pub fn arc() -> NodeType {
         })
 }
 
+/// A radius from input `nickname`: a finite, positive number.
+fn positive(r: f64, nickname: &str) -> Result<f64, NodeError> {
+    if r.is_finite() && r > 0.0 {
+        Ok(r)
+    } else {
+        Err(format!("input {nickname}: the radius must be a positive number, got {r}").into())
+    }
+}
+
+/// Ellipse \[Ellipse\]: an ellipse from its plane and two radii, with its foci.
+pub fn ellipse() -> NodeType {
+    primitive(ELLIPSE, "Ellipse", "Ellipse")
+        .gh_guid("46b5564d-d3eb-4bf1-ae16-15ed132cfd88")
+        .description(
+            "Creates the ellipse about the origin of a plane with one radius along the plane's \
+             x axis and the other along its y axis, as Rhino's exact rational NURBS form: \
+             degree 2, nine control points, weights 1 and 1/√2, domain 0 to 2π, starting on \
+             the x axis and turning towards the y axis. Also gives the two foci, on the major \
+             axis at √(a² − b²) either side of the centre (first on its positive side); a \
+             circle's foci are both its centre.",
+        )
+        .input(
+            Port::new("Plane", "P", DataType::Plane)
+                .doc("Base plane of the ellipse; its origin is the centre. Default World XY.")
+                .default_value(Plane::WORLD_XY),
+        )
+        .input(
+            Port::new("Radius 1", "R1", DataType::Number)
+                .doc("Radius along the plane's x axis, in model units, positive. Default 1.")
+                .default_value(1.0)
+                .constraint(crate::constraints::positive_radius),
+        )
+        .input(
+            Port::new("Radius 2", "R2", DataType::Number)
+                .doc("Radius along the plane's y axis, in model units, positive. Default 1.")
+                .default_value(1.0)
+                .constraint(crate::constraints::positive_radius),
+        )
+        .output(Port::new("Ellipse", "E", DataType::Curve).doc("The ellipse."))
+        .output(
+            Port::new("Focus 1", "F1", DataType::Point)
+                .doc("The focus on the positive side of the major axis."),
+        )
+        .output(
+            Port::new("Focus 2", "F2", DataType::Point)
+                .doc("The focus on the negative side of the major axis."),
+        )
+        .solve(|s| {
+            let plane: Plane = *s.item(0)?;
+            let r1 = positive(*s.item::<f64>(1)?, "R1")?;
+            let r2 = positive(*s.item::<f64>(2)?, "R2")?;
+            if !plane.is_finite() {
+                return Err("input P: the plane is not finite".into());
+            }
+            let e = Ellipse::new(plane, r1, r2)?;
+            let (f1, f2) = e.foci();
+            s.set(0, Shared::new(Curve::from(e.to_nurbs())));
+            s.set(1, f1);
+            s.set(2, f2);
+            Ok(())
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use std::f64::consts::FRAC_PI_2;
@@ -221,6 +286,46 @@ mod tests {
                 .run();
             assert_eq!(values(&r.outputs[0]), vec![None]);
             single_error(&r);
+        }
+    }
+
+    #[test]
+    fn ellipse_and_its_foci() {
+        let r = NodeCall::new(&ellipse())
+            .skip_input()
+            .input(DataTree::from_item(5.0))
+            .input(DataTree::from_item(3.0))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let c = curves(&r.outputs[0])[0].clone();
+        assert_eq!(c.domain(), Interval::new(0.0, std::f64::consts::TAU));
+        assert!(c.is_closed());
+        assert!(close(
+            c.point_at(FRAC_PI_2),
+            Point3::new(0.0, 3.0, 0.0),
+            1e-14
+        ));
+        assert_eq!(
+            values(&r.outputs[1]),
+            vec![Some(Value::Point(Point3::new(4.0, 0.0, 0.0)))]
+        );
+        assert_eq!(
+            values(&r.outputs[2]),
+            vec![Some(Value::Point(Point3::new(-4.0, 0.0, 0.0)))]
+        );
+    }
+
+    #[test]
+    fn ellipse_bad_radii_name_the_port() {
+        for (r1, r2, port) in [(0.0, 1.0, "R1"), (1.0, f64::NAN, "R2"), (-1.0, 2.0, "R1")] {
+            let r = NodeCall::new(&ellipse())
+                .skip_input()
+                .input(DataTree::from_item(r1))
+                .input(DataTree::from_item(r2))
+                .run();
+            assert_eq!(values(&r.outputs[0]), vec![None]);
+            let e = single_error(&r);
+            assert!(e.contains(port), "{e}");
         }
     }
 }

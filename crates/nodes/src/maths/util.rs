@@ -1,5 +1,5 @@
-//! Maths › Util and Trig: Average, Maximum, Minimum, Round, Radians and Degrees; and
-//! Maths › Domain › Bounds.
+//! Maths › Util and Trig: Average, Maximum, Minimum, Round, Radians, Degrees and Smooth
+//! Numbers; and Maths › Domain › Bounds.
 //!
 //! Maximum, Minimum, Round, Radians and Degrees are plain functions of their items, lifted
 //! over typed columns. Average takes numbers, points or vectors (the mean of points is their
@@ -29,6 +29,8 @@ pub const BOUNDS: &str = "maths.bounds";
 pub const PI: &str = "maths.pi";
 /// Id of [`one_over_x`].
 pub const ONE_OVER_X: &str = "maths.one_over_x";
+/// Id of [`smooth_numbers`].
+pub const SMOOTH_NUMBERS: &str = "maths.smooth_numbers";
 
 /// Registers the utility, trigonometry and Bounds nodes.
 pub fn register(registry: &mut NodeRegistry) {
@@ -42,6 +44,7 @@ pub fn register(registry: &mut NodeRegistry) {
         bounds(),
         pi(),
         one_over_x(),
+        smooth_numbers(),
     ] {
         registry.register(t);
     }
@@ -243,6 +246,48 @@ pub fn one_over_x() -> NodeType {
             } else {
                 Ok(1.0 / x)
             }
+        })
+}
+
+/// Smooth Numbers \[Smooth\]: numbers smoothed over successive solutions; one solution passes
+/// them on unchanged.
+pub fn smooth_numbers() -> NodeType {
+    util(SMOOTH_NUMBERS, "Smooth Numbers", "Smooth")
+        .gh_guid("5b424e1c-d061-43cd-8c20-db84564b0502")
+        .description(
+            "Passes numbers on, smoothed over time. Grasshopper's Smooth Numbers eases each \
+             number from its value in the previous solution towards its new value over about \
+             two seconds of repeated solutions, for animations driven by sliders; its first \
+             solution passes the numbers on unchanged. A locus run is one solution with no \
+             history and no clock, so the tree passes through unchanged, paths and nulls \
+             included. NaN items pass through too, with a warning naming the input.",
+        )
+        .input(
+            Port::new("Numbers", "N", DataType::Number)
+                .tree()
+                .optional()
+                .doc("The changing numbers, a tree of any shape."),
+        )
+        .output(
+            Port::new("Numbers", "N", DataType::Number)
+                .tree()
+                .doc("The smoothed numbers: the same tree in one solution."),
+        )
+        .solve(|s| {
+            let tree = s.tree(0)?.clone();
+            let nans = tree
+                .values()
+                .filter(|v| {
+                    v.as_ref()
+                        .and_then(|v| v.get::<f64>())
+                        .is_some_and(f64::is_nan)
+                })
+                .count();
+            if nans > 0 {
+                s.warning(format!("input N: {nans} NaN item(s) passed on unchanged"));
+            }
+            s.set_tree(0, tree);
+            Ok(())
         })
 }
 
@@ -450,6 +495,34 @@ mod tests {
         for (d, e) in deg.iter().zip([180.0, 90.0, -45.0]) {
             assert!((d - e).abs() < 1e-12);
         }
+    }
+
+    #[test]
+    fn smooth_numbers_passes_one_solution_through() {
+        let mut first = Branch::new(DataType::Number);
+        first.push(1.0);
+        first.push_null();
+        let input = DataTree::from_branches([
+            (TreePath::new(vec![0]), first),
+            (TreePath::new(vec![1, 2]), Branch::from_items(vec![-3.5])),
+        ]);
+        let r = NodeCall::new(&smooth_numbers()).input(input.clone()).run();
+        assert_clean(&r);
+        assert_eq!(r.outputs[0], input);
+    }
+
+    #[test]
+    fn smooth_numbers_reports_nan_and_takes_no_input() {
+        let r = NodeCall::new(&smooth_numbers())
+            .input(DataTree::from_list(vec![1.0, f64::NAN, 2.0]))
+            .run();
+        assert_eq!(
+            messages(&r, Level::Warning),
+            ["input N: 1 NaN item(s) passed on unchanged"]
+        );
+        assert_eq!(numbers(&r.outputs[0]).len(), 3);
+        let r = NodeCall::new(&smooth_numbers()).run();
+        assert!(r.outputs[0].values().next().is_none());
     }
 
     #[test]

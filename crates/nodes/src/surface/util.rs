@@ -1,9 +1,9 @@
-//! Surface › Util: Divide Surface and Iso Curve.
+//! Surface › Util: Divide Surface, Iso Curve and Offset Surface.
 //!
 //! Grasshopper files Iso Curve under Curve › Spline; here it sits with the other nodes that
 //! take a surface and a {uv} (**decision**, so that the Curve category stays as it is).
 
-use locus_kernel::tolerance::ZERO_TOLERANCE;
+use locus_kernel::tolerance::{DOCUMENT_TOLERANCE, ZERO_TOLERANCE};
 use locus_kernel::{Curve, Point3, SurfaceDirection, Vector3};
 use locus_runtime::{
     Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Value,
@@ -16,6 +16,8 @@ use super::analysis::{surface_input, surface_port, uv_on, uv_port};
 pub const DIVIDE_SURFACE: &str = "surface.divide_surface";
 /// Id of [`iso_curve`].
 pub const ISO_CURVE: &str = "surface.iso_curve";
+/// Id of [`offset_surface`].
+pub const OFFSET_SURFACE: &str = "surface.offset_surface";
 
 /// The largest number of points Divide Surface makes for one surface: (U + 1)·(V + 1).
 pub const MAX_GRID_POINTS: u64 = 10_000_000;
@@ -24,6 +26,7 @@ pub const MAX_GRID_POINTS: u64 = 10_000_000;
 pub fn register(registry: &mut NodeRegistry) {
     registry.register(divide_surface());
     registry.register(iso_curve());
+    registry.register(offset_surface());
 }
 
 /// A division count: a positive integer.
@@ -176,6 +179,47 @@ pub fn iso_curve() -> NodeType {
         })
 }
 
+/// Offset Surface \[Offset\]: a surface moved along its normals by a distance.
+pub fn offset_surface() -> NodeType {
+    NodeType::new(OFFSET_SURFACE, "Offset Surface", "Offset", "Surface")
+        .gh_guid("b25c5762-f90e-4839-9fc5-74b74ab42b1e")
+        .subcategory("Util")
+        .description(
+            "Offsets a surface by a distance along its normals (against them for a negative \
+             distance). The exact offset is not a NURBS surface in general, so, as in Rhino, \
+             the result approximates it within the document tolerance (0.001): a bicubic \
+             surface interpolating offset points on a grid of the surface's parameters, \
+             refined until the offset is within the tolerance between the samples too, with \
+             the surface's domain. Planes offset exactly. At singular points (poles) the normal \
+             is its limit. An offset past the radius of curvature on the concave side folds \
+             the surface over itself. Locus surfaces carry no trims, so Retrim changes nothing.",
+        )
+        .input(surface_port("Surface to offset."))
+        .input(
+            Port::new("Distance", "D", DataType::Number)
+                .default_value(1.0)
+                .doc("Offset distance along the normals, in model units. Default 1."),
+        )
+        .input(
+            Port::new("Retrim", "T", DataType::Boolean)
+                .default_value(true)
+                .doc("Whether to trim the offset like the surface; untrimmed surfaces ignore it. Default true."),
+        )
+        .output(surface_port("The offset surface."))
+        .solve(|s| {
+            let surface = surface_input(s, 0)?;
+            let distance = *s.item::<f64>(1)?;
+            if !distance.is_finite() {
+                return Err(format!("input D: the distance must be a finite number, got {distance}").into());
+            }
+            let offset = surface
+                .offset(distance, DOCUMENT_TOLERANCE)
+                .map_err(|e| NodeError(format!("input S: {e}")))?;
+            s.set(0, Shared::new(offset));
+            Ok(())
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use std::f64::consts::{FRAC_PI_2, TAU};
@@ -304,5 +348,54 @@ mod tests {
             .input(DataTree::from_item(Point3::new(1.0, f64::INFINITY, 0.0)))
             .run();
         assert!(nan.outputs[0].values().all(|v| v.is_none()));
+    }
+
+    #[test]
+    fn offset_surface_grows_a_sphere_and_rejects_bad_distances() {
+        let r = NodeCall::new(&offset_surface())
+            .input(DataTree::from_item(sphere(3.0)))
+            .input(DataTree::from_list(vec![1.0, -1.0]))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let out: Vec<Option<Value>> = r.outputs[0].values().collect();
+        for (value, radius) in out.iter().zip([4.0, 2.0]) {
+            let Some(Value::Surface(o)) = value else {
+                panic!("{value:?}")
+            };
+            let (du, dv) = (o.domain_u(), o.domain_v());
+            let p = o.point_at(du.parameter_at(0.3), dv.parameter_at(0.6));
+            assert!((p.distance(Point3::ORIGIN) - radius).abs() < DOCUMENT_TOLERANCE);
+        }
+        for bad in [f64::NAN, f64::INFINITY] {
+            let r = NodeCall::new(&offset_surface())
+                .input(DataTree::from_item(sphere(3.0)))
+                .input(DataTree::from_item(bad))
+                .run();
+            let errors = crate::test_support::messages(&r, Level::Error);
+            assert_eq!(errors.len(), 1, "{errors:?}");
+            assert!(errors[0].contains("input D"), "{errors:?}");
+        }
+        let r = NodeCall::new(&offset_surface())
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .run();
+        assert_eq!(crate::test_support::messages(&r, Level::Error).len(), 1);
+    }
+
+    #[test]
+    fn offset_plane_is_exact() {
+        let plane = NurbsSurface::from_plane(
+            &Plane::WORLD_XY,
+            Interval::new(0.0, 2.0),
+            Interval::new(0.0, 3.0),
+        )
+        .unwrap();
+        let r = NodeCall::new(&offset_surface())
+            .input(DataTree::from_item(Shared::new(plane)))
+            .input(DataTree::from_item(-2.5))
+            .run();
+        let Some(Value::Surface(o)) = r.outputs[0].values().next().flatten() else {
+            panic!("{:?}", r.messages)
+        };
+        assert!(o.point_at(1.0, 1.5).distance(Point3::new(1.0, 1.5, -2.5)) < 1e-12);
     }
 }
