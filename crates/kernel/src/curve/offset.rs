@@ -5,12 +5,16 @@
 //! counter-clockwise circle grows for a positive distance and shrinks for a negative one.
 //!
 //! - Lines move as a whole; circles and arcs in planes parallel to the offset plane change their
-//!   radius (an offset that takes the radius to zero or below is an error). These are exact.
+//!   radius (an offset that takes the radius to zero or below is an error). NURBS curves that
+//!   trace an arc or circle within [`ARC_OFFSET_TOLERANCE`] (Rhino's rational quadratic form,
+//!   recognized by [`Curve::try_arc`]) are scaled about the centre, which changes the radius at
+//!   every parameter. These are exact.
 //! - Polylines (and degree-1 NURBS curves, through their control polygons) offset each segment
 //!   and fill each corner on the outside of the turn according to [`OffsetCorners`]; on the
 //!   inside of a turn the segments are trimmed to meet (a sharp corner). Also exact.
 //! - Other curves are approximated: the exact offset points are sampled, interpolated by a
-//!   cubic (periodic for closed smooth curves), and the samples are doubled until the fit is
+//!   cubic (periodic for closed smooth curves; with the offset's end tangents for open ones),
+//!   and the samples are doubled until the fit is
 //!   within half the tolerance at the points between samples. Curves with kinks are offset piece by
 //!   piece and the pieces joined with corners as polylines are (the inside of a kink, where two
 //!   curved pieces would need trimming against each other, is bridged by a line and reported).
@@ -19,8 +23,8 @@
 //! distance beyond the radius of curvature on the inside of a bend) a warning is given;
 //! intersections between distant parts of the offset are not looked for.
 
-use crate::curve::nurbs::interpolate::KnotStyle;
-use crate::geometry::tolerance::ZERO_TOLERANCE;
+use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
+use crate::geometry::tolerance::{ARC_OFFSET_TOLERANCE, ZERO_TOLERANCE};
 use crate::{
     Arc, Circle, CubicHermite, Curve, Error, Line, NurbsCurve, Plane, Point3, Polyline, Result,
     Vector3,
@@ -115,6 +119,12 @@ impl Curve {
                 offset_polyline(polyline.points(), distance, n, corners)
             }
             Self::Nurbs(c) if c.degree() == 1 => offset_polyline(c.points(), distance, n, corners),
+            Self::Nurbs(c)
+                if let Some(arc) = self.try_arc(tolerance.min(ARC_OFFSET_TOLERANCE))
+                    && parallel(arc.circle.normal(), n) =>
+            {
+                Ok(exact(Self::Nurbs(offset_nurbs_arc(c, &arc, distance, n)?)))
+            }
             _ => {
                 let pieces = self.explode(true)?;
                 if pieces.len() == 1 {
@@ -149,6 +159,23 @@ fn offset_circle(circle: &Circle, distance: f64, n: Vector3) -> Result<Circle> {
         )));
     }
     Circle::new(circle.plane, radius)
+}
+
+/// The offset of a NURBS curve that traces an arc or circle: its control points scaled about
+/// the centre by the new radius over the old, weights and knots kept. Scaling about the centre
+/// moves every point of the arc radially by the offset distance at the same parameter, so the
+/// result is exact (Rhino's rational form stays rational, a fitted arc keeps its
+/// parameterization).
+fn offset_nurbs_arc(c: &NurbsCurve, arc: &Arc, distance: f64, n: Vector3) -> Result<NurbsCurve> {
+    let circle = offset_circle(&arc.circle, distance, n)?;
+    let factor = circle.radius / arc.circle.radius;
+    let centre = arc.circle.center();
+    let points = c
+        .points()
+        .iter()
+        .map(|&p| centre + (p - centre) * factor)
+        .collect();
+    NurbsCurve::new(c.degree(), points, c.weights().to_vec(), c.knots().to_vec())
 }
 
 /// One straight segment of a polyline being offset.
@@ -303,6 +330,15 @@ fn offset_point(curve: &Curve, t: f64, distance: f64, n: Vector3) -> Option<(Poi
     Some((curve.point_at(t) + u * distance, cusp))
 }
 
+/// The unit tangent of the offset at `t`: the curve's, reversed past a cusp.
+fn offset_tangent(curve: &Curve, t: f64, distance: f64, n: Vector3) -> Option<Vector3> {
+    let tangent = curve.tangent_at(t)?;
+    let flipped = curve
+        .signed_curvature_at(t, n)
+        .is_some_and(|k| 1.0 + distance * k < 0.0);
+    Some(if flipped { -tangent } else { tangent })
+}
+
 /// The approximate offset of a curve without kinks.
 fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Result<CurveOffset> {
     let d = curve.domain();
@@ -336,7 +372,14 @@ fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Re
             points.pop();
             NurbsCurve::interpolate_periodic(&points, 3, KnotStyle::Chord)?
         } else {
-            NurbsCurve::interpolate(&points, 3, KnotStyle::Chord)?
+            // The ends are fitted with the offset's own tangents there: natural end conditions
+            // (no bending at the ends) would leave an error there that shrinks only with the
+            // square of the sample spacing.
+            let tangents = EndTangents {
+                start: offset_tangent(curve, d.t0, distance, n),
+                end: offset_tangent(curve, d.t1, distance, n),
+            };
+            NurbsCurve::interpolate_with_tangents(&points, 3, KnotStyle::Chord, tangents)?
         };
         let fitted: Curve = fitted.into();
         let mut error: f64 = 0.0;
