@@ -16,8 +16,9 @@
 //!   cubic (periodic for closed smooth curves; with the offset's end tangents for open ones),
 //!   and the samples are doubled until the fit is
 //!   within half the tolerance at the points between samples. Curves with kinks are offset piece by
-//!   piece and the pieces joined with corners as polylines are (the inside of a kink, where two
-//!   curved pieces would need trimming against each other, is bridged by a line and reported).
+//!   piece and the pieces joined with corners as polylines are; on the inside of a kink the two
+//!   offset pieces are trimmed where they cross (found by Newton's method from their ends; where
+//!   it finds no crossing they are bridged by a line, with a warning).
 //!
 //! Where the offset turns back on itself locally (a segment trimmed past its length, a
 //! distance beyond the radius of curvature on the inside of a bend) a warning is given;
@@ -26,8 +27,8 @@
 use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
 use crate::geometry::tolerance::{ARC_OFFSET_TOLERANCE, ZERO_TOLERANCE};
 use crate::{
-    Arc, Circle, CubicHermite, Curve, Error, Line, NurbsCurve, Plane, Point3, Polyline, Result,
-    Vector3,
+    Arc, Circle, CubicHermite, Curve, Error, Interval, Line, NurbsCurve, Plane, Point3, Polyline,
+    Result, Vector3,
 };
 
 /// The most samples a curve offset takes before giving up on its tolerance.
@@ -412,7 +413,52 @@ fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Re
     }
 }
 
-/// The offset of a curve with kinks: its pieces offset one by one and joined with corners.
+/// What joins the offsets of two consecutive pieces of a kinked curve.
+enum Joint {
+    /// Nothing: their ends meet, or they were trimmed to where they cross.
+    Met,
+    /// A corner fill (or, where trimming failed, a bridging line).
+    Fill(Curve),
+}
+
+/// How many Newton steps [`crossing_near_ends`] takes at most.
+const CROSSING_ITERATIONS: usize = 50;
+
+/// Where the end part of `a` crosses the start part of `b` in the plane with normal `n`: the
+/// parameters `(s, t)` with `a(s) = b(t)`, found by Newton's method on the two in-plane
+/// coordinates from `(end of a, start of b)`. `None` when it does not converge inside both
+/// domains (the pieces are too short, or do not cross there).
+fn crossing_near_ends(a: &Curve, b: &Curve, n: Vector3) -> Option<(f64, f64)> {
+    let frame = Plane::from_normal(Point3::ORIGIN, n).ok()?;
+    let (e1, e2) = (frame.x_axis, frame.y_axis);
+    let (da, db) = (a.domain(), b.domain());
+    let (mut s, mut t) = (da.t1, db.t0);
+    let scale = a.end_point().to_vector().length().max(1.0);
+    for _ in 0..CROSSING_ITERATIONS {
+        let (p, dp, _) = a.point_and_derivatives_at(s);
+        let (q, dq, _) = b.point_and_derivatives_at(t);
+        let f = p - q;
+        let (f1, f2) = (f.dot(e1), f.dot(e2));
+        if f1.hypot(f2) <= 4.0 * f64::EPSILON * scale {
+            return Some((s, t));
+        }
+        // [dp, -dq] (ds, dt) = -f in the plane's coordinates.
+        let (a11, a21, a12, a22) = (dp.dot(e1), dp.dot(e2), -dq.dot(e1), -dq.dot(e2));
+        let det = a11 * a22 - a12 * a21;
+        if det.abs() <= f64::MIN_POSITIVE || !det.is_finite() {
+            return None;
+        }
+        let ds = (-f1 * a22 + f2 * a12) / det;
+        let dt = (-a11 * f2 + a21 * f1) / det;
+        s = (s + ds).clamp(da.t0, da.t1);
+        t = (t + dt).clamp(db.t0, db.t1);
+    }
+    let gap = a.point_at(s) - b.point_at(t);
+    (gap.dot(e1).hypot(gap.dot(e2)) <= 1e-9 * scale).then_some((s, t))
+}
+
+/// The offset of a curve with kinks: its pieces offset one by one, trimmed where they cross on
+/// the inside of a kink, and joined with corners on the outside.
 fn offset_pieces(
     curve: &Curve,
     pieces: &[Curve],
@@ -434,34 +480,46 @@ fn offset_pieces(
         warnings.extend(o.warnings);
         offsets.push(o.curve);
     }
-    let mut out: Vec<Curve> = Vec::with_capacity(2 * pieces.len());
     let count = pieces.len();
     let joints = if closed { count } else { count - 1 };
-    for k in 0..count {
-        out.push(offsets[k].clone());
-        if k >= joints {
-            continue;
-        }
+    // The part of each offset piece that is kept, narrowed by the trims at inside kinks.
+    let mut kept: Vec<Interval> = offsets.iter().map(Curve::domain).collect();
+    let mut fills = Vec::with_capacity(joints);
+    for k in 0..joints {
         let next = (k + 1) % count;
         let (p, q) = (offsets[k].end_point(), offsets[next].start_point());
         if p.distance(q) <= tolerance {
+            fills.push(Joint::Met);
             continue;
         }
         let d1 = pieces[k].domain();
         let d2 = pieces[next].domain();
         let (Some(t1), Some(t2)) = (pieces[k].tangent_at(d1.t1), pieces[next].tangent_at(d2.t0))
         else {
-            out.push(Line::new(p, q).into());
+            fills.push(Joint::Fill(Line::new(p, q).into()));
             continue;
         };
         let outside = t1.cross(t2).dot(n) * distance > 0.0;
         let fill: Curve = match corners {
-            OffsetCorners::Round if outside => Arc::from_start_tangent_end(p, t1, q)?.into(),
-            OffsetCorners::Smooth if outside => {
+            _ if !outside => {
+                if let Some((s, t)) = crossing_near_ends(&offsets[k], &offsets[next], n) {
+                    kept[k].t1 = s;
+                    kept[next].t0 = t;
+                    fills.push(Joint::Met);
+                    continue;
+                }
+                warnings.push(format!(
+                    "the offsets on the inside of the kink after piece {k} do not cross near \
+                     their ends: they are bridged by a line"
+                ));
+                Line::new(p, q).into()
+            }
+            OffsetCorners::Round => Arc::from_start_tangent_end(p, t1, q)?.into(),
+            OffsetCorners::Smooth => {
                 let l = p.distance(q);
                 Curve::try_from(CubicHermite::new(p, t1 * l, q, t2 * l))?
             }
-            OffsetCorners::Sharp | OffsetCorners::None if outside => {
+            OffsetCorners::Sharp | OffsetCorners::None => {
                 // Extend both ends along their tangents to where the tangent lines meet.
                 let v = pieces[k].end_point();
                 let u1 = (p - v) / distance;
@@ -469,16 +527,25 @@ fn offset_pieces(
                 let m = v + (u1 + u2) * (distance / (1.0 + u1.dot(u2)).max(1e-9));
                 Polyline::new(vec![p, m, q])?.into()
             }
-            _ => {
-                if !outside {
-                    warnings.push(format!(
-                        "the inside of the kink after piece {k} is bridged by a line, not trimmed"
-                    ));
-                }
-                Line::new(p, q).into()
-            }
+            OffsetCorners::Chamfer => Line::new(p, q).into(),
         };
-        out.push(fill);
+        fills.push(Joint::Fill(fill));
+    }
+    let mut out: Vec<Curve> = Vec::with_capacity(2 * count);
+    for k in 0..count {
+        let domain = offsets[k].domain();
+        if kept[k] == domain {
+            out.push(offsets[k].clone());
+        } else if kept[k].t0 < kept[k].t1 {
+            out.push(offsets[k].trim(kept[k])?);
+        } else {
+            warnings.push(format!(
+                "offset piece {k} is trimmed past its length: the offset intersects itself"
+            ));
+        }
+        if let Some(Joint::Fill(fill)) = fills.get(k) {
+            out.push(fill.clone());
+        }
     }
     let curve = Curve::join_ordered(&out, closed)?;
     Ok(CurveOffset { curve, warnings })

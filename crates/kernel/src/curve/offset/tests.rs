@@ -274,6 +274,34 @@ fn open_curves_are_fitted_with_their_end_tangents() {
     assert!(lo > 0.3 - tolerance && hi < 0.3 + tolerance, "{lo} {hi}");
 }
 
+#[test]
+fn curved_pieces_are_trimmed_where_they_cross_inside_a_kink() {
+    // A lens of two arcs meeting at two kinks, offset inwards: the offset arcs are trimmed where
+    // they cross, so every point of the result is at the distance from the lens (a bridging
+    // line would come nearer to the kinks).
+    let top = Arc::from_three_points(p(-1.0, 0.0), p(0.0, 0.5), p(1.0, 0.0)).unwrap();
+    let bottom = Arc::from_three_points(p(1.0, 0.0), p(0.0, -0.5), p(-1.0, 0.0)).unwrap();
+    let lens = Curve::join(
+        &[
+            Curve::Nurbs(top.to_nurbs()),
+            Curve::Nurbs(bottom.to_nurbs()),
+        ],
+        DOCUMENT_TOLERANCE,
+        false,
+    )
+    .unwrap()
+    .remove(0);
+    assert!(lens.is_closed());
+    for corners in [OffsetCorners::Sharp, OffsetCorners::Round] {
+        // The lens runs clockwise, so a positive distance moves inwards.
+        let o = offset(lens.clone(), 0.1, corners);
+        assert!(o.warnings.is_empty(), "{:?}", o.warnings);
+        assert!(o.curve.is_closed());
+        let (lo, hi) = distance_range(&lens, &o.curve);
+        assert!(lo > 0.1 - 1e-9 && hi < 0.1 + 1e-9, "{corners:?}: {lo} {hi}");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
 
