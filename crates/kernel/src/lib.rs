@@ -95,7 +95,7 @@ pub use crate::intersect::mesh::{mesh_plane, mesh_ray};
 pub use crate::mesh::parameters::{
     COARSEST_MESH_ANGLE, DEFAULT_MESH_MAX_ANGLE, DEFAULT_MESH_MAX_CHORD_DEVIATION,
     DEFAULT_MESH_MAX_EDGE_LENGTH, DEFAULT_MESH_MIN_EDGE_LENGTH, FINEST_MESH_ANGLE,
-    MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters,
+    MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters, SURFACE_CHORD_SHARE,
 };
 pub use crate::mesh::{
     Color, GRID_COINCIDENT_DISTANCE, INDEX_MIN_FACES, Mesh, MeshEdge, MeshFace, MeshPoint,

@@ -277,6 +277,31 @@ fn open_surfaces_mesh_within_a_chord_tolerance() {
 }
 
 #[test]
+fn doubly_curved_meshes_stay_within_the_chord_deviation() {
+    // The deviations of a surface's two directions add in the middle of a grid cell and of its
+    // diagonal; the mesher shares the limit between them (`SURFACE_CHORD_SHARE`), so that
+    // triangle centroids and edge midpoints stay within it (they were up to twice as far).
+    let centre = Point3::new(1.0, -2.0, 0.5);
+    let brep = Brep::from_sphere(&Sphere::new(centre, 3.0).unwrap()).unwrap();
+    for tol in [1e-1, 1e-2, 1e-3] {
+        let mesh = Mesh::from_brep(&brep, &MeshingParameters::with_chord_deviation(tol)).unwrap();
+        let v = mesh.vertices();
+        let mut worst: f64 = 0.0;
+        for t in mesh.triangles() {
+            let [a, b, c] = t.map(|i| v[i as usize]);
+            let centroid = a + ((b - a) + (c - a)) / 3.0;
+            for m in [centroid, a.midpoint(b), b.midpoint(c), c.midpoint(a)] {
+                worst = worst.max(3.0 - m.distance(centre));
+            }
+        }
+        assert!(
+            worst <= tol * 1.05,
+            "{tol}: a point {worst} inside the sphere"
+        );
+    }
+}
+
+#[test]
 fn bad_parameters_fail_with_a_reason() {
     let brep = Brep::from_sphere(&Sphere::new(Point3::ORIGIN, 1.0).unwrap()).unwrap();
     for bad in [

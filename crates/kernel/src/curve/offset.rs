@@ -5,25 +5,30 @@
 //! counter-clockwise circle grows for a positive distance and shrinks for a negative one.
 //!
 //! - Lines move as a whole; circles and arcs in planes parallel to the offset plane change their
-//!   radius (an offset that takes the radius to zero or below is an error). These are exact.
+//!   radius (an offset that takes the radius to zero or below is an error). NURBS curves that
+//!   trace an arc or circle within [`ARC_OFFSET_TOLERANCE`] (Rhino's rational quadratic form,
+//!   recognized by [`Curve::try_arc`]) are scaled about the centre, which changes the radius at
+//!   every parameter. These are exact.
 //! - Polylines (and degree-1 NURBS curves, through their control polygons) offset each segment
 //!   and fill each corner on the outside of the turn according to [`OffsetCorners`]; on the
 //!   inside of a turn the segments are trimmed to meet (a sharp corner). Also exact.
 //! - Other curves are approximated: the exact offset points are sampled, interpolated by a
-//!   cubic (periodic for closed smooth curves), and the samples are doubled until the fit is
+//!   cubic (periodic for closed smooth curves; with the offset's end tangents for open ones),
+//!   and the samples are doubled until the fit is
 //!   within half the tolerance at the points between samples. Curves with kinks are offset piece by
-//!   piece and the pieces joined with corners as polylines are (the inside of a kink, where two
-//!   curved pieces would need trimming against each other, is bridged by a line and reported).
+//!   piece and the pieces joined with corners as polylines are; on the inside of a kink the two
+//!   offset pieces are trimmed where they cross (found by Newton's method from their ends; where
+//!   it finds no crossing they are bridged by a line, with a warning).
 //!
 //! Where the offset turns back on itself locally (a segment trimmed past its length, a
 //! distance beyond the radius of curvature on the inside of a bend) a warning is given;
 //! intersections between distant parts of the offset are not looked for.
 
-use crate::curve::nurbs::interpolate::KnotStyle;
-use crate::geometry::tolerance::ZERO_TOLERANCE;
+use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
+use crate::geometry::tolerance::{ARC_OFFSET_TOLERANCE, ZERO_TOLERANCE};
 use crate::{
-    Arc, Circle, CubicHermite, Curve, Error, Line, NurbsCurve, Plane, Point3, Polyline, Result,
-    Vector3,
+    Arc, Circle, CubicHermite, Curve, Error, Interval, Line, NurbsCurve, Plane, Point3, Polyline,
+    Result, Vector3,
 };
 
 /// The most samples a curve offset takes before giving up on its tolerance.
@@ -115,6 +120,12 @@ impl Curve {
                 offset_polyline(polyline.points(), distance, n, corners)
             }
             Self::Nurbs(c) if c.degree() == 1 => offset_polyline(c.points(), distance, n, corners),
+            Self::Nurbs(c)
+                if let Some(arc) = self.try_arc(tolerance.min(ARC_OFFSET_TOLERANCE))
+                    && parallel(arc.circle.normal(), n) =>
+            {
+                Ok(exact(Self::Nurbs(offset_nurbs_arc(c, &arc, distance, n)?)))
+            }
             _ => {
                 let pieces = self.explode(true)?;
                 if pieces.len() == 1 {
@@ -149,6 +160,23 @@ fn offset_circle(circle: &Circle, distance: f64, n: Vector3) -> Result<Circle> {
         )));
     }
     Circle::new(circle.plane, radius)
+}
+
+/// The offset of a NURBS curve that traces an arc or circle: its control points scaled about
+/// the centre by the new radius over the old, weights and knots kept. Scaling about the centre
+/// moves every point of the arc radially by the offset distance at the same parameter, so the
+/// result is exact (Rhino's rational form stays rational, a fitted arc keeps its
+/// parameterization).
+fn offset_nurbs_arc(c: &NurbsCurve, arc: &Arc, distance: f64, n: Vector3) -> Result<NurbsCurve> {
+    let circle = offset_circle(&arc.circle, distance, n)?;
+    let factor = circle.radius / arc.circle.radius;
+    let centre = arc.circle.center();
+    let points = c
+        .points()
+        .iter()
+        .map(|&p| centre + (p - centre) * factor)
+        .collect();
+    NurbsCurve::new(c.degree(), points, c.weights().to_vec(), c.knots().to_vec())
 }
 
 /// One straight segment of a polyline being offset.
@@ -303,6 +331,15 @@ fn offset_point(curve: &Curve, t: f64, distance: f64, n: Vector3) -> Option<(Poi
     Some((curve.point_at(t) + u * distance, cusp))
 }
 
+/// The unit tangent of the offset at `t`: the curve's, reversed past a cusp.
+fn offset_tangent(curve: &Curve, t: f64, distance: f64, n: Vector3) -> Option<Vector3> {
+    let tangent = curve.tangent_at(t)?;
+    let flipped = curve
+        .signed_curvature_at(t, n)
+        .is_some_and(|k| 1.0 + distance * k < 0.0);
+    Some(if flipped { -tangent } else { tangent })
+}
+
 /// The approximate offset of a curve without kinks.
 fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Result<CurveOffset> {
     let d = curve.domain();
@@ -336,7 +373,14 @@ fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Re
             points.pop();
             NurbsCurve::interpolate_periodic(&points, 3, KnotStyle::Chord)?
         } else {
-            NurbsCurve::interpolate(&points, 3, KnotStyle::Chord)?
+            // The ends are fitted with the offset's own tangents there: natural end conditions
+            // (no bending at the ends) would leave an error there that shrinks only with the
+            // square of the sample spacing.
+            let tangents = EndTangents {
+                start: offset_tangent(curve, d.t0, distance, n),
+                end: offset_tangent(curve, d.t1, distance, n),
+            };
+            NurbsCurve::interpolate_with_tangents(&points, 3, KnotStyle::Chord, tangents)?
         };
         let fitted: Curve = fitted.into();
         let mut error: f64 = 0.0;
@@ -369,7 +413,52 @@ fn offset_smooth(curve: &Curve, distance: f64, n: Vector3, tolerance: f64) -> Re
     }
 }
 
-/// The offset of a curve with kinks: its pieces offset one by one and joined with corners.
+/// What joins the offsets of two consecutive pieces of a kinked curve.
+enum Joint {
+    /// Nothing: their ends meet, or they were trimmed to where they cross.
+    Met,
+    /// A corner fill (or, where trimming failed, a bridging line).
+    Fill(Curve),
+}
+
+/// How many Newton steps [`crossing_near_ends`] takes at most.
+const CROSSING_ITERATIONS: usize = 50;
+
+/// Where the end part of `a` crosses the start part of `b` in the plane with normal `n`: the
+/// parameters `(s, t)` with `a(s) = b(t)`, found by Newton's method on the two in-plane
+/// coordinates from `(end of a, start of b)`. `None` when it does not converge inside both
+/// domains (the pieces are too short, or do not cross there).
+fn crossing_near_ends(a: &Curve, b: &Curve, n: Vector3) -> Option<(f64, f64)> {
+    let frame = Plane::from_normal(Point3::ORIGIN, n).ok()?;
+    let (e1, e2) = (frame.x_axis, frame.y_axis);
+    let (da, db) = (a.domain(), b.domain());
+    let (mut s, mut t) = (da.t1, db.t0);
+    let scale = a.end_point().to_vector().length().max(1.0);
+    for _ in 0..CROSSING_ITERATIONS {
+        let (p, dp, _) = a.point_and_derivatives_at(s);
+        let (q, dq, _) = b.point_and_derivatives_at(t);
+        let f = p - q;
+        let (f1, f2) = (f.dot(e1), f.dot(e2));
+        if f1.hypot(f2) <= 4.0 * f64::EPSILON * scale {
+            return Some((s, t));
+        }
+        // [dp, -dq] (ds, dt) = -f in the plane's coordinates.
+        let (a11, a21, a12, a22) = (dp.dot(e1), dp.dot(e2), -dq.dot(e1), -dq.dot(e2));
+        let det = a11 * a22 - a12 * a21;
+        if det.abs() <= f64::MIN_POSITIVE || !det.is_finite() {
+            return None;
+        }
+        let ds = (-f1 * a22 + f2 * a12) / det;
+        let dt = (-a11 * f2 + a21 * f1) / det;
+        s = (s + ds).clamp(da.t0, da.t1);
+        t = (t + dt).clamp(db.t0, db.t1);
+    }
+    let gap = a.point_at(s) - b.point_at(t);
+    (gap.dot(e1).hypot(gap.dot(e2)) <= 1e-9 * scale).then_some((s, t))
+}
+
+/// The offset of a curve with kinks: its pieces offset one by one, trimmed where they cross on
+/// the inside of a kink, and joined with corners on the outside.
 fn offset_pieces(
     curve: &Curve,
     pieces: &[Curve],
@@ -391,34 +480,46 @@ fn offset_pieces(
         warnings.extend(o.warnings);
         offsets.push(o.curve);
     }
-    let mut out: Vec<Curve> = Vec::with_capacity(2 * pieces.len());
     let count = pieces.len();
     let joints = if closed { count } else { count - 1 };
-    for k in 0..count {
-        out.push(offsets[k].clone());
-        if k >= joints {
-            continue;
-        }
+    // The part of each offset piece that is kept, narrowed by the trims at inside kinks.
+    let mut kept: Vec<Interval> = offsets.iter().map(Curve::domain).collect();
+    let mut fills = Vec::with_capacity(joints);
+    for k in 0..joints {
         let next = (k + 1) % count;
         let (p, q) = (offsets[k].end_point(), offsets[next].start_point());
         if p.distance(q) <= tolerance {
+            fills.push(Joint::Met);
             continue;
         }
         let d1 = pieces[k].domain();
         let d2 = pieces[next].domain();
         let (Some(t1), Some(t2)) = (pieces[k].tangent_at(d1.t1), pieces[next].tangent_at(d2.t0))
         else {
-            out.push(Line::new(p, q).into());
+            fills.push(Joint::Fill(Line::new(p, q).into()));
             continue;
         };
         let outside = t1.cross(t2).dot(n) * distance > 0.0;
         let fill: Curve = match corners {
-            OffsetCorners::Round if outside => Arc::from_start_tangent_end(p, t1, q)?.into(),
-            OffsetCorners::Smooth if outside => {
+            _ if !outside => {
+                if let Some((s, t)) = crossing_near_ends(&offsets[k], &offsets[next], n) {
+                    kept[k].t1 = s;
+                    kept[next].t0 = t;
+                    fills.push(Joint::Met);
+                    continue;
+                }
+                warnings.push(format!(
+                    "the offsets on the inside of the kink after piece {k} do not cross near \
+                     their ends: they are bridged by a line"
+                ));
+                Line::new(p, q).into()
+            }
+            OffsetCorners::Round => Arc::from_start_tangent_end(p, t1, q)?.into(),
+            OffsetCorners::Smooth => {
                 let l = p.distance(q);
                 Curve::try_from(CubicHermite::new(p, t1 * l, q, t2 * l))?
             }
-            OffsetCorners::Sharp | OffsetCorners::None if outside => {
+            OffsetCorners::Sharp | OffsetCorners::None => {
                 // Extend both ends along their tangents to where the tangent lines meet.
                 let v = pieces[k].end_point();
                 let u1 = (p - v) / distance;
@@ -426,16 +527,25 @@ fn offset_pieces(
                 let m = v + (u1 + u2) * (distance / (1.0 + u1.dot(u2)).max(1e-9));
                 Polyline::new(vec![p, m, q])?.into()
             }
-            _ => {
-                if !outside {
-                    warnings.push(format!(
-                        "the inside of the kink after piece {k} is bridged by a line, not trimmed"
-                    ));
-                }
-                Line::new(p, q).into()
-            }
+            OffsetCorners::Chamfer => Line::new(p, q).into(),
         };
-        out.push(fill);
+        fills.push(Joint::Fill(fill));
+    }
+    let mut out: Vec<Curve> = Vec::with_capacity(2 * count);
+    for k in 0..count {
+        let domain = offsets[k].domain();
+        if kept[k] == domain {
+            out.push(offsets[k].clone());
+        } else if kept[k].t0 < kept[k].t1 {
+            out.push(offsets[k].trim(kept[k])?);
+        } else {
+            warnings.push(format!(
+                "offset piece {k} is trimmed past its length: the offset intersects itself"
+            ));
+        }
+        if let Some(Joint::Fill(fill)) = fills.get(k) {
+            out.push(fill.clone());
+        }
     }
     let curve = Curve::join_ordered(&out, closed)?;
     Ok(CurveOffset { curve, warnings })

@@ -51,3 +51,12 @@ pub const CURVATURE_TOLERANCE: f64 = 1e-9;
 /// which curve ends join ([`Curve::join`](crate::Curve::join)) and within which approximations
 /// such as curve offsets are made.
 pub const DOCUMENT_TOLERANCE: f64 = 0.001;
+
+/// How close to a circle a NURBS curve must be for [`Curve::offset`](crate::Curve::offset) to
+/// treat it as an arc and offset it exactly, by changing its radius: 1e-10 model units (or the
+/// offset's own tolerance, when that is smaller).
+///
+/// Rhino's rational quadratic arcs and circles lie on their circle to rounding (about 1e-15
+/// relative), so they pass; a curve that is only close to an arc (a cubic approximating a
+/// quarter circle deviates by about 3e-4 of its radius) does not, and is offset by a fit.
+pub const ARC_OFFSET_TOLERANCE: f64 = 1e-10;

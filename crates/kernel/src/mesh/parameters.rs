@@ -18,6 +18,18 @@ pub const DEFAULT_MESH_MAX_ANGLE: f64 = 3.5 * std::f64::consts::PI / 180.0;
 /// which keeps the mesh independent of the model's scale).
 pub const DEFAULT_MESH_MAX_CHORD_DEVIATION: f64 = 0.0;
 
+/// The share of the chord deviation each parameter direction of a surface may use: one half.
+///
+/// A surface is divided along each direction on its own, so that the isocurves' chords
+/// deviate by at most the share given to that direction. In a grid cell the deviations of the
+/// two directions add: at the middle of a cell of a surface bending by `κ_u` and `κ_v`, and at
+/// the middle of the diagonal that splits it into triangles, the distance to the surface is
+/// about `(κ_u h_u² + κ_v h_v²) / 8`, the sum of the two isocurves' sagittas. Giving each
+/// direction half of the limit keeps that sum within it (a sphere or torus meshed with the
+/// whole limit in both directions was up to twice the limit away from its surface). Edge
+/// curves, which are single chords, keep the whole limit.
+pub const SURFACE_CHORD_SHARE: f64 = 0.5;
+
 /// The default maximum edge length: 0 (off).
 pub const DEFAULT_MESH_MAX_EDGE_LENGTH: f64 = 0.0;
 

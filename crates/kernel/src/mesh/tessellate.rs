@@ -15,7 +15,7 @@
 
 use spade::{ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation};
 
-use crate::mesh::parameters::{MAX_MESH_VERTICES, MeshingParameters};
+use crate::mesh::parameters::{MAX_MESH_VERTICES, MeshingParameters, SURFACE_CHORD_SHARE};
 use crate::mesh::sampling::{Family, Probe, thin_out};
 use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{Brep, Error, Mesh, MeshFace, NurbsCurve, NurbsSurface, Point3, Result, Vector3};
@@ -178,8 +178,14 @@ impl Mesh {
         }
         // Each edge divided once; the mesh vertices along it, first vertex to last.
         let mut edge_divisions: Vec<(Vec<f64>, Vec<u32>)> = Vec::with_capacity(brep.edges().len());
+        // An edge chord is a side of triangles whose other direction adds its own share of the
+        // deviation, so edges get the same share as each direction of a surface.
+        let edge_limits = MeshingParameters {
+            max_chord_deviation: parameters.max_chord_deviation * SURFACE_CHORD_SHARE,
+            ..*parameters
+        };
         for edge in brep.edges() {
-            let ts = curve_parameters(&edge.curve, parameters)?;
+            let ts = curve_parameters(&edge.curve, &edge_limits)?;
             let mut ids = Vec::with_capacity(ts.len());
             for (k, &t) in ts.iter().enumerate() {
                 let id = if k == 0 {
@@ -221,8 +227,12 @@ fn mesh_face(
 ) -> Result<()> {
     let face = &brep.faces()[f];
     let surface = &face.surface;
-    let us = surface_parameters(surface, SurfaceDirection::U, parameters)?;
-    let vs = surface_parameters(surface, SurfaceDirection::V, parameters)?;
+    let per_direction = MeshingParameters {
+        max_chord_deviation: parameters.max_chord_deviation * SURFACE_CHORD_SHARE,
+        ..*parameters
+    };
+    let us = surface_parameters(surface, SurfaceDirection::U, &per_direction)?;
+    let vs = surface_parameters(surface, SurfaceDirection::V, &per_direction)?;
     if b.vertices.len() + us.len() * vs.len() > MAX_MESH_VERTICES {
         return Err(Error::InvalidInput(format!(
             "meshing would make more than {MAX_MESH_VERTICES} vertices; loosen the meshing \

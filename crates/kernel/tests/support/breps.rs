@@ -1,6 +1,7 @@
 //! The B-rep recipes of `ops-cases.json` (`conventions.breps`), built with the kernel's own
 //! builders: box, sphere, cylinder, cone, torus (a circle revolved a full turn), one untrimmed
-//! surface, and the extrusion of a curve (capped when the recipe says so).
+//! surface, the extrusion of a curve (capped when the recipe says so), the revolution of a
+//! curve about an axis, and a planar face bounded by closed curves (outer and holes).
 
 use std::f64::consts::TAU;
 
@@ -133,6 +134,22 @@ pub fn brep(v: &Value) -> Brep {
             let profile = Curve::Nurbs(nurbs_curve(&v["profile"]));
             assert!(v["capped"].as_bool().unwrap_or(false) == profile.is_closed());
             Brep::from_curve_extrusion(&profile, vector(&v["vector"]), 1e-7)
+        }
+        "revolution" => {
+            let profile = nurbs_curve(&v["profile"]);
+            let from = point(&v["axis"]["from"]);
+            let axis = point(&v["axis"]["to"]) - from;
+            let angle = num(&v["angle"]).min(TAU);
+            let surface =
+                NurbsSurface::revolution(&profile, from, axis, Interval::new(0.0, angle)).unwrap();
+            Brep::from_surface(surface)
+        }
+        "planar-face" => {
+            let mut loops = vec![vec![nurbs_curve(&v["outer"])]];
+            for hole in v["holes"].as_array().into_iter().flatten() {
+                loops.push(vec![nurbs_curve(hole)]);
+            }
+            Brep::from_planar_loops(&loops, 1e-7)
         }
         other => panic!("no recipe for a {other}"),
     };

@@ -165,11 +165,12 @@ pub fn offset_curve() -> NodeType {
             "Offsets a curve by a distance in a plane: every point moves along the tangent \
              crossed with the plane's normal, to the right of the direction of travel, so a \
              counter-clockwise circle grows for a positive distance. Lines, polylines, circles \
-             and arcs are offset exactly (a circle changes its radius; an offset that collapses \
-             it is an error); polyline corners on the outside of a turn are filled as the \
-             Corners input says and trimmed on the inside. Other curves are approximated \
-             within 0.001 model units by cubic interpolation of sampled offset points, piece by \
-             piece between kinks. Warns where the offset intersects itself locally (a segment \
+             and arcs (NURBS ones too) are offset exactly (a circle changes its radius; an \
+             offset that collapses it is an error); polyline corners on the outside of a turn \
+             are filled as the Corners input says and trimmed on the inside. Other curves are \
+             approximated within 0.001 model units by cubic interpolation of sampled offset \
+             points, piece by piece between kinks, the pieces trimmed where they cross on the \
+             inside of a kink. Warns where the offset intersects itself locally (a segment \
              trimmed past its length, a distance beyond the radius of curvature).",
         )
         .input(Port::new("Curve", "C", DataType::Curve).doc("Curve to offset."))

@@ -218,6 +218,90 @@ fn kinked_curves_offset_piece_by_piece() {
     );
 }
 
+#[test]
+fn rational_circles_and_arcs_change_radius_exactly() {
+    let plane = Plane::WORLD_XY.translated(Vector3::new(1.0, -2.0, 0.0));
+    let circle = Circle::new(plane, 2.0).unwrap();
+    let nurbs = circle.to_nurbs();
+    let o = offset(Curve::Nurbs(nurbs.clone()), 0.5, OffsetCorners::Sharp);
+    assert!(o.warnings.is_empty());
+    let Curve::Nurbs(c) = &o.curve else {
+        panic!("{:?}", o.curve)
+    };
+    // Same form (knots, weights), every point exactly 2.5 from the centre at the same parameter.
+    assert_eq!((c.knots(), c.weights()), (nurbs.knots(), nurbs.weights()));
+    for i in 0..=40 {
+        let t = nurbs.domain().parameter_at(i as f64 / 40.0);
+        let radial = (nurbs.point_at(t) - plane.origin).try_normalize().unwrap();
+        let want = plane.origin + radial * 2.5;
+        assert!(c.point_at(t).distance(want) < 1e-14, "{t}");
+    }
+    // A reversed arc shrinks for a positive distance; one the offset collapses is an error.
+    let arc = Arc::new(circle, Interval::new(0.5, 2.0)).unwrap();
+    let reversed = Curve::Nurbs(arc.to_nurbs()).reversed();
+    let o = offset(reversed.clone(), 0.5, OffsetCorners::Sharp);
+    let found = o.curve.try_arc(1e-12).unwrap();
+    assert!((found.radius() - 1.5).abs() < 1e-14);
+    assert!(
+        reversed
+            .offset(2.0, &Plane::WORLD_XY, OffsetCorners::Sharp, 0.001)
+            .is_err()
+    );
+}
+
+#[test]
+fn open_curves_are_fitted_with_their_end_tangents() {
+    let curve = Curve::from(
+        NurbsCurve::create(
+            &[p(0.0, 0.0), p(1.0, 1.5), p(3.0, -1.0), p(4.0, 0.5)],
+            3,
+            false,
+        )
+        .unwrap(),
+    );
+    let tolerance = 1e-8;
+    let o = curve
+        .offset(0.3, &Plane::WORLD_XY, OffsetCorners::Sharp, tolerance)
+        .unwrap();
+    assert!(o.warnings.is_empty(), "{:?}", o.warnings);
+    for (t, s) in [(0.0, 0.0), (1.0, 1.0)] {
+        let (d, e) = (curve.domain(), o.curve.domain());
+        let want = curve.tangent_at(d.parameter_at(t)).unwrap();
+        let got = o.curve.tangent_at(e.parameter_at(s)).unwrap();
+        assert!((got - want).length() < 1e-12, "{got:?} {want:?}");
+    }
+    let (lo, hi) = distance_range(&curve, &o.curve);
+    assert!(lo > 0.3 - tolerance && hi < 0.3 + tolerance, "{lo} {hi}");
+}
+
+#[test]
+fn curved_pieces_are_trimmed_where_they_cross_inside_a_kink() {
+    // A lens of two arcs meeting at two kinks, offset inwards: the offset arcs are trimmed where
+    // they cross, so every point of the result is at the distance from the lens (a bridging
+    // line would come nearer to the kinks).
+    let top = Arc::from_three_points(p(-1.0, 0.0), p(0.0, 0.5), p(1.0, 0.0)).unwrap();
+    let bottom = Arc::from_three_points(p(1.0, 0.0), p(0.0, -0.5), p(-1.0, 0.0)).unwrap();
+    let lens = Curve::join(
+        &[
+            Curve::Nurbs(top.to_nurbs()),
+            Curve::Nurbs(bottom.to_nurbs()),
+        ],
+        DOCUMENT_TOLERANCE,
+        false,
+    )
+    .unwrap()
+    .remove(0);
+    assert!(lens.is_closed());
+    for corners in [OffsetCorners::Sharp, OffsetCorners::Round] {
+        // The lens runs clockwise, so a positive distance moves inwards.
+        let o = offset(lens.clone(), 0.1, corners);
+        assert!(o.warnings.is_empty(), "{:?}", o.warnings);
+        assert!(o.curve.is_closed());
+        let (lo, hi) = distance_range(&lens, &o.curve);
+        assert!(lo > 0.1 - 1e-9 && hi < 0.1 + 1e-9, "{corners:?}: {lo} {hi}");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
 
