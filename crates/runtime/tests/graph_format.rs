@@ -94,6 +94,7 @@ fn a_graph_built_in_code_survives_save_and_load() {
                 output_modifiers: vec![("R".to_owned(), vec![Modifier::Graft])],
                 matching: Matching::Cross,
                 disabled: true,
+                subgraph: None,
             },
             GraphNode {
                 id: NodeId::from("p"),
