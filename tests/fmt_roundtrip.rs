@@ -87,6 +87,7 @@ fn node() -> impl Strategy<Value = GraphNode> {
                     output_modifiers,
                     matching,
                     disabled,
+                    subgraph: None,
                 }
             },
         )

@@ -132,7 +132,7 @@ fn object_ref(o: &GhObject, cluster: &str) -> ObjectRef {
 fn slug(text: &str) -> String {
     let mut out = String::new();
     for c in text.chars() {
-        if c.is_alphanumeric() || c == '-' || c == '/' {
+        if c.is_alphanumeric() || c == '-' {
             out.extend(c.to_lowercase());
         } else if !out.ends_with('_') {
             out.push('_');

@@ -94,9 +94,9 @@ fn duplicate_and_invalid_node_ids() {
         [
             "g.ron:3:8: error: duplicate node id \"a\" (first used on line 2)",
             "g.ron:4:8: error: invalid node id \"b.c\" (ids are non-empty and have no dots, \
-             quotes or spaces)",
-            "g.ron:5:8: error: invalid node id \"\" (ids are non-empty and have no dots, quotes \
-             or spaces)",
+             slashes, quotes or spaces; a slash separates a sub-graph's id from its nodes' ids)",
+            "g.ron:5:8: error: invalid node id \"\" (ids are non-empty and have no dots, \
+             slashes, quotes or spaces; a slash separates a sub-graph's id from its nodes' ids)",
         ]
     );
 }

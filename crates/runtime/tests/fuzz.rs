@@ -177,6 +177,7 @@ fn graph_node(i: usize) -> impl Strategy<Value = GraphNode> {
                     .collect(),
                 matching,
                 disabled,
+                subgraph: None,
             },
         )
 }

@@ -94,6 +94,7 @@ fn a_graph_built_in_code_survives_save_and_load() {
                 output_modifiers: vec![("R".to_owned(), vec![Modifier::Graft])],
                 matching: Matching::Cross,
                 disabled: true,
+                subgraph: None,
             },
             GraphNode {
                 id: NodeId::from("p"),
@@ -226,7 +227,7 @@ fn every_structural_problem_is_reported() {
              nodes, wires, inputs, outputs, expected, expected_messages)",
             "3:11: error: expected a string in quotes for `name`, found 3",
             "6:41: error: unknown field `size` in a node (fields: id, type, inputs, outputs, values, \
-             settings, modifiers, output_modifiers, matching, disabled)",
+             settings, modifiers, output_modifiers, matching, disabled, path, graph)",
             "7:9: error: missing field `id` in a node",
             "8:51: error: expected longest, shortest or cross for `matching`, found longest_list",
             "8:75: error: expected true or false for `disabled`, found 1",
