@@ -473,11 +473,11 @@ mod tests {
             let mut heading = 0.0f64;
             let mut at = p(0.0, 0.0);
             for (i, turn) in turns.iter().enumerate() {
-                at = at + Vector3::new(heading.cos(), heading.sin(), 0.0) * lengths[i];
+                at += Vector3::new(heading.cos(), heading.sin(), 0.0) * lengths[i];
                 points.push(at);
                 heading += if i % 2 == 0 { *turn } else { -*turn };
             }
-            at = at + Vector3::new(heading.cos(), heading.sin(), 0.0) * lengths[turns.len()];
+            at += Vector3::new(heading.cos(), heading.sin(), 0.0) * lengths[turns.len()];
             points.push(at);
             let c: Curve = Polyline::new(points).unwrap().into();
             let f = c.fillet_corners(radius, 1e-9).unwrap();

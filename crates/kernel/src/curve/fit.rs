@@ -35,10 +35,11 @@ fn solve_band(mut band: Vec<Vec<f64>>, w: usize, mut rhs: Vec<[f64; 3]>) -> Opti
     for r in 0..n {
         for k in 0..=w.min(n - 1 - r) {
             let mut sum = band[r][k];
-            for i in r.saturating_sub(w)..r {
+            let first = r.saturating_sub(w);
+            for (i, row) in band.iter().enumerate().take(r).skip(first) {
                 let (a, b) = (r - i, r + k - i);
                 if b <= w {
-                    sum -= band[i][a] * band[i][b];
+                    sum -= row[a] * row[b];
                 }
             }
             if k == 0 {
@@ -103,9 +104,9 @@ fn least_squares(
         for (k, &b) in basis[..=degree].iter().enumerate() {
             let col = start + k;
             if col == 0 {
-                r = r - first.to_vector() * b;
+                r -= first.to_vector() * b;
             } else if col == n - 1 {
-                r = r - last.to_vector() * b;
+                r -= last.to_vector() * b;
             }
         }
         for (k, &bk) in basis[..=degree].iter().enumerate() {

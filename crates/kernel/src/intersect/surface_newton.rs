@@ -148,8 +148,9 @@ fn solve(m: &mut [[f64; 3]; 3], b: &mut [f64; 3], n: usize) -> Option<[f64; 3]> 
         b.swap(col, pivot);
         for row in col + 1..n {
             let factor = m[row][col] / m[col][col];
-            for k in col..n {
-                m[row][k] -= factor * m[col][k];
+            let top = m[col];
+            for (value, above) in m[row][col..n].iter_mut().zip(&top[col..n]) {
+                *value -= factor * above;
             }
             b[row] -= factor * b[col];
         }
