@@ -124,7 +124,12 @@ pub struct PyGraph {
 impl PyGraph {
     fn build(py: Python<'_>, text: String, path: Option<PathBuf>) -> PyResult<Self> {
         let file = path.as_ref().map(|p| p.display().to_string());
-        let document = Document::parse(&text).map_err(|d| graph_error(py, &d, file.as_deref()))?;
+        let mut document =
+            Document::parse(&text).map_err(|d| graph_error(py, &d, file.as_deref()))?;
+        // Sub-graph `path:`s are relative to the graph's own file.
+        if let Some(p) = &path {
+            document = document.with_origin(p.clone());
+        }
         let name = document.graph().name.clone();
         let description = document.graph().description.clone();
         let checked = document
