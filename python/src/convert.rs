@@ -9,6 +9,7 @@
 //! | `Point3`, `Vector3`, `Plane`, `Domain`, `Transform`, `Box`, `NurbsCurve`, `NurbsSurface`, `Brep` | the value |
 //! | a tuple of three numbers | a Point (a Vector on a Vector input) |
 //! | a tuple of two numbers on a Domain input | a Domain |
+//! | a tuple of two domains (or of two pairs) on a Domain2 input, and out | a Domain2 |
 //! | a list (or a tuple on a Number, Integer, Boolean or Text input) | one branch `{0}` |
 //! | a dict `{"{0;1}": [...], (2, 0): [...]}` | a tree, keys as paths |
 //! | numpy `(N,)` float / int / bool | one branch of numbers / integers / booleans |
@@ -42,6 +43,11 @@ pub(crate) fn value_to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound
         Value::Vector(v) => Bound::new(py, PyVector3(*v))?.into_any(),
         Value::Plane(p) => Bound::new(py, PyPlane(*p))?.into_any(),
         Value::Domain(d) => Bound::new(py, PyDomain(*d))?.into_any(),
+        // A Domain² as the tuple of its u and v domains.
+        Value::Domain2(d) => {
+            PyTuple::new(py, [Bound::new(py, PyDomain(d.u))?, Bound::new(py, PyDomain(d.v))?])?
+                .into_any()
+        }
         Value::Transform(t) => Bound::new(py, PyTransform(*t))?.into_any(),
         Value::Box(b) => Bound::new(py, PyBox(*b))?.into_any(),
         Value::Surface(s) => Bound::new(py, PySurface(s.clone()))?.into_any(),
@@ -334,7 +340,8 @@ fn is_sequence_like(obj: &Bound<'_, PyAny>, hint: DataType) -> bool {
         return array.ndim() > 0;
     }
     if obj.cast::<PyTuple>().is_ok() {
-        return tuples_are_lists(hint) || coordinate_tuple(obj, hint).is_none();
+        return tuples_are_lists(hint)
+            || coordinate_tuple(obj, hint).is_none() && domain2_tuple(obj, hint).is_none();
     }
     false
 }
@@ -495,6 +502,28 @@ fn branch_from_array(obj: &Bound<'_, PyAny>, hint: DataType) -> Result<Branch, S
     }
 }
 
+/// A pair of domains (`Domain` objects or `(start, end)` tuples) on a Domain² input.
+fn domain2_tuple(obj: &Bound<'_, PyAny>, hint: DataType) -> Option<Value> {
+    if hint != DataType::Domain2 {
+        return None;
+    }
+    let tuple = obj.cast::<PyTuple>().ok()?;
+    let domain = |o: Bound<'_, PyAny>| match o.cast::<PyDomain>() {
+        Ok(d) => Some(d.get().0),
+        Err(_) => match coordinate_tuple(&o, DataType::Domain) {
+            Some(Value::Domain(d)) => Some(d),
+            _ => None,
+        },
+    };
+    match tuple.len() {
+        2 => Some(Value::Domain2(locus_kernel::UvInterval::new(
+            domain(tuple.get_item(0).ok()?)?,
+            domain(tuple.get_item(1).ok()?)?,
+        ))),
+        _ => None,
+    }
+}
+
 /// Three (or two) numbers of a tuple that stands for one point, vector or domain.
 fn coordinate_tuple(obj: &Bound<'_, PyAny>, hint: DataType) -> Option<Value> {
     let tuple = obj.cast::<PyTuple>().ok()?;
@@ -586,6 +615,9 @@ pub(crate) fn item_from_py(
     }
     if let Ok(m) = obj.cast::<PyMesh>() {
         return Ok(Some(Value::Mesh(m.get().0.clone())));
+    }
+    if let Some(v) = domain2_tuple(obj, hint) {
+        return Ok(Some(v));
     }
     if let Some(v) = coordinate_tuple(obj, hint) {
         if let Value::Point(p) = &v

@@ -133,6 +133,8 @@ pub enum GhItem {
     Plane([f64; 9]),
     /// An interval.
     Domain([f64; 2]),
+    /// A two-dimensional interval: u start, u end, v start, v end.
+    Domain2([f64; 4]),
     /// A colour (alpha, red, green, blue).
     Colour([u8; 4]),
     /// Something that is not a simple value (internalised geometry, a reference): its item
@@ -349,6 +351,7 @@ fn read_item(chunk: &Chunk) -> GhItem {
         (_, Value::Point3(p)) => GhItem::Point(*p),
         (_, Value::Plane(p)) => GhItem::Plane(*p),
         (_, Value::Interval(d)) => GhItem::Domain(*d),
+        (_, Value::Interval2(d)) => GhItem::Domain2(*d),
         (_, Value::Color(c)) => GhItem::Colour(*c),
         (_, Value::String(s)) => GhItem::Text(s.clone()),
         (_, Value::Int32(i)) => GhItem::Integer(i64::from(*i)),

@@ -79,6 +79,13 @@ pub fn item(item: &GhItem, target: DataType) -> Option<String> {
             triple(&p[6..9])
         ),
         GhItem::Domain([a, b]) => format!("({}, {})", number(*a), number(*b)),
+        GhItem::Domain2([u0, u1, v0, v1]) => format!(
+            "(({}, {}), ({}, {}))",
+            number(*u0),
+            number(*u1),
+            number(*v0),
+            number(*v1)
+        ),
         // locus has no colour type: a colour is its text "a;r;g;b" as Grasshopper prints it.
         GhItem::Colour([a, r, g, b]) => text(&format!("{a};{r};{g};{b}")),
         GhItem::Other(_) => return None,

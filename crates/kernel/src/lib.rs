@@ -72,7 +72,7 @@ pub use crate::curve::polyline::Polyline;
 pub use crate::error::{Error, Result};
 pub use crate::geometry::best_candidate::{BEST_CANDIDATES, best_candidate_samples};
 pub use crate::geometry::bounding_box::BoundingBox;
-pub use crate::geometry::interval::Interval;
+pub use crate::geometry::interval::{Interval, UvInterval};
 pub use crate::geometry::oriented_box::OrientedBox;
 pub use crate::geometry::plane::{Plane, perpendicular_to};
 pub use crate::geometry::plane_fit::{LINE_SPREAD, PlaneFit};

@@ -19,7 +19,7 @@ use std::time::Duration;
 
 use locus_kernel::{
     Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, MeshFace, MeshingParameters,
-    NurbsCurve, OrientedBox, Plane, Point3, Polyline, Sphere, Transform, Vector3,
+    NurbsCurve, OrientedBox, Plane, Point3, Polyline, Sphere, Transform, UvInterval, Vector3,
 };
 use locus_runtime::{
     Branch, DataTree, DataType, NodeCall, NodeRegistry, NodeType, Shared, TreePath, Value,
@@ -104,6 +104,22 @@ fn pool(t: DataType) -> Vec<Value> {
             Value::Domain(Interval::new(1.0, -1.0)),
             Value::Domain(Interval::new(nan, 1.0)),
             Value::Domain(Interval::new(-inf, inf)),
+        ],
+        DataType::Domain2 => vec![
+            Value::Domain2(UvInterval::new(
+                Interval::new(0.0, 0.5),
+                Interval::new(0.2, 1.0),
+            )),
+            Value::Domain2(UvInterval::new(
+                Interval::new(0.0, 0.0),
+                Interval::new(0.0, 1.0),
+            )),
+            Value::Domain2(UvInterval::new(
+                Interval::new(1.0, -1.0),
+                Interval::new(3.0, 2.0),
+            )),
+            Value::Domain2(UvInterval::new(Interval::new(nan, 1.0), Interval::UNIT)),
+            Value::Domain2(UvInterval::new(Interval::UNIT, Interval::new(-inf, inf))),
         ],
         DataType::Transform => vec![
             Value::Transform(Transform::IDENTITY),

@@ -231,6 +231,18 @@ impl Serialize for ValueJson<'_> {
             Value::Vector(v) => tagged(s, "vector", &vector(*v)),
             Value::Plane(p) => tagged(s, "plane", &PlaneJson(p)),
             Value::Domain(d) => tagged(s, "domain", &interval(*d)),
+            Value::Domain2(d) => {
+                struct Domain2Json(locus_kernel::UvInterval);
+                impl Serialize for Domain2Json {
+                    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                        let mut m = s.serialize_map(Some(2))?;
+                        m.serialize_entry("u", &interval(self.0.u))?;
+                        m.serialize_entry("v", &interval(self.0.v))?;
+                        m.end()
+                    }
+                }
+                tagged(s, "domain2", &Domain2Json(*d))
+            }
             Value::Transform(t) => {
                 let rows = t.to_rows();
                 let rows: Vec<Nums<'_>> = rows.iter().map(|r| Nums(r)).collect();

@@ -19,7 +19,7 @@ use std::sync::Arc;
 
 use locus_kernel::{
     Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox,
-    Plane, Point3, Transform, Vector3,
+    Plane, Point3, Transform, UvInterval, Vector3,
 };
 
 /// A Rust type that can be stored as an item of a data tree.
@@ -298,6 +298,8 @@ value_types! {
     Plane(Plane) = "Plane", placeholder Plane::WORLD_XY;
     /// A domain (interval of numbers).
     Domain(Interval) = "Domain", placeholder Interval::UNIT;
+    /// A two-dimensional domain: a u and a v interval (Grasshopper's Domain²).
+    Domain2(UvInterval) = "Domain2", placeholder UvInterval::UNIT;
     /// A 4×4 transformation.
     Transform(Transform) = "Transform", placeholder Transform::IDENTITY;
     /// An oriented box (Grasshopper's Box: a plane and three intervals).

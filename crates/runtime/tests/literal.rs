@@ -213,7 +213,7 @@ fn errors_say_what_was_expected() {
         (
             "(1, 2, 3, 4, 5)",
             DataType::Generic,
-            "cannot tell the type of a tuple of 5 items: write a point (x, y, z), a domain (start, end), a line of two triples, a plane of three triples or a transform of four rows, or tag it as in Vector(1, 2, 3)",
+            "cannot tell the type of a tuple of 5 items: write a point (x, y, z), a domain (start, end), a Domain2 of two pairs, a line of two triples, a plane of three triples or a transform of four rows, or tag it as in Vector(1, 2, 3)",
         ),
         (
             r#"{"{0}": 1}"#,

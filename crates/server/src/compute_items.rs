@@ -5,7 +5,9 @@
 //! or as bare JSON, items without `type` (the input's type decides), booleans as `"True"`, keys
 //! of geometry structs in any case. Geometry is validated by the kernel's constructors.
 
-use locus_kernel::{Arc, Circle, Interval, Line, OrientedBox, Plane, Point3, Transform, Vector3};
+use locus_kernel::{
+    Arc, Circle, Interval, Line, OrientedBox, Plane, Point3, Transform, UvInterval, Vector3,
+};
 use locus_runtime::{DataType, Value, cast_value};
 use serde_json::{Map, Value as Json, json};
 
@@ -22,6 +24,8 @@ pub fn dotnet_type(data_type: DataType) -> Option<&'static str> {
         DataType::Vector => "Rhino.Geometry.Vector3d",
         DataType::Plane => "Rhino.Geometry.Plane",
         DataType::Domain => "Rhino.Geometry.Interval",
+        // Inferred: RhinoCommon's struct for Grasshopper's Domain², its U and V intervals.
+        DataType::Domain2 => "Rhino.Geometry.UVInterval",
         DataType::Transform => "Rhino.Geometry.Transform",
         DataType::Box => "Rhino.Geometry.Box",
         DataType::Line => "Rhino.Geometry.Line",
@@ -48,6 +52,7 @@ fn type_of_dotnet(name: &str) -> Option<Result<DataType, ()>> {
         "Rhino.Geometry.Vector3d" | "Rhino.Geometry.Vector3f" => DataType::Vector,
         "Rhino.Geometry.Plane" => DataType::Plane,
         "Rhino.Geometry.Interval" => DataType::Domain,
+        "Rhino.Geometry.UVInterval" => DataType::Domain2,
         "Rhino.Geometry.Transform" => DataType::Transform,
         "Rhino.Geometry.Box" => DataType::Box,
         "Rhino.Geometry.Line" => DataType::Line,
@@ -275,6 +280,13 @@ fn value_of(j: &Json, t: DataType) -> Result<Value, String> {
         DataType::Vector => Value::Vector(vector(j)?),
         DataType::Plane => Value::Plane(plane(j)?),
         DataType::Domain => Value::Domain(interval(j)?),
+        DataType::Domain2 => {
+            let o = object(j, "UV interval")?;
+            Value::Domain2(UvInterval::new(
+                interval(sub(o, "U", "UV interval")?)?,
+                interval(sub(o, "V", "UV interval")?)?,
+            ))
+        }
         DataType::Line => {
             let o = object(j, "line")?;
             Value::Line(Line::new(
@@ -380,6 +392,7 @@ pub fn encode_value(value: &Value) -> Result<(&'static str, String), String> {
         Value::Vector(v) => vector_json(*v).to_string(),
         Value::Plane(p) => plane_json(p).to_string(),
         Value::Domain(d) => interval_json(*d).to_string(),
+        Value::Domain2(d) => json!({"U": interval_json(d.u), "V": interval_json(d.v)}).to_string(),
         Value::Transform(t) => {
             let mut o = Map::new();
             for (r, row) in t.to_rows().iter().enumerate() {

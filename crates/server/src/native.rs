@@ -7,7 +7,9 @@
 //! the Compute endpoints, an unknown input name is a 400 here.
 
 use base64::Engine as _;
-use locus_kernel::{Arc, Circle, Interval, Line, OrientedBox, Plane, Point3, Transform, Vector3};
+use locus_kernel::{
+    Arc, Circle, Interval, Line, OrientedBox, Plane, Point3, Transform, UvInterval, Vector3,
+};
 use locus_runtime::{
     Branch, DataTree, DataType, Message, MessageJson, TreeJson, Value, ValueJson, cast_value,
 };
@@ -246,6 +248,10 @@ pub fn decode_item(j: &Json, target: DataType) -> Result<Option<Value>, String> 
                 "vector" => Value::Vector(vec3(v)?),
                 "plane" => Value::Plane(plane(v)?),
                 "domain" => Value::Domain(pair(v, "a domain")?),
+                "domain2" => Value::Domain2(UvInterval::new(
+                    pair(get(v, "u", "a domain2")?, "\"u\" of a domain2")?,
+                    pair(get(v, "v", "a domain2")?, "\"v\" of a domain2")?,
+                )),
                 "line" => match v.as_array().map(Vec::as_slice) {
                     Some([a, b]) => Value::Line(Line::new(pt(a)?, pt(b)?)),
                     _ => return Err("a line must be [[x, y, z], [x, y, z]]".into()),

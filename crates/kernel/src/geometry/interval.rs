@@ -145,10 +145,62 @@ impl Interval {
         t >= self.min() && t <= self.max()
     }
 
+    /// The `count` equal parts, in order: part `k` runs from the parameter at `k / count` to
+    /// the one at `(k + 1) / count`, so neighbours share their bounds exactly and the last part
+    /// ends exactly on `t1` (a decreasing interval gives decreasing parts). No parts for 0.
+    pub fn divide(self, count: usize) -> Vec<Self> {
+        let at = |k: usize| {
+            if k == count {
+                self.t1
+            } else {
+                self.parameter_at(k as f64 / count as f64)
+            }
+        };
+        (0..count).map(|k| Self::new(at(k), at(k + 1))).collect()
+    }
+
     /// The same interval with its ends swapped.
     #[inline]
     pub fn reversed(self) -> Self {
         Self::new(self.t1, self.t0)
+    }
+}
+
+/// A pair of intervals, one per surface direction (Grasshopper's *Domain²*, Rhino's
+/// `UVInterval`): a rectangle of surface parameters, each side possibly decreasing.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct UvInterval {
+    /// The interval in the u direction.
+    pub u: Interval,
+    /// The interval in the v direction.
+    pub v: Interval,
+}
+
+impl UvInterval {
+    /// The unit square `[0, 1] × [0, 1]`.
+    pub const UNIT: Self = Self::new(Interval::UNIT, Interval::UNIT);
+
+    /// Creates the pair from its two intervals.
+    #[inline]
+    pub const fn new(u: Interval, v: Interval) -> Self {
+        Self { u, v }
+    }
+
+    /// Whether all four ends are finite.
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.u.is_finite() && self.v.is_finite()
+    }
+
+    /// The `u_count × v_count` equal parts, u-major (every v part of the first u part, then
+    /// the next u part), made of the parts of [`Interval::divide`].
+    pub fn divide(self, u_count: usize, v_count: usize) -> Vec<Self> {
+        let (us, vs) = (self.u.divide(u_count), self.v.divide(v_count));
+        let mut parts = Vec::with_capacity(us.len().saturating_mul(vs.len()));
+        for &u in &us {
+            parts.extend(vs.iter().map(|&v| Self::new(u, v)));
+        }
+        parts
     }
 }
 
@@ -205,5 +257,22 @@ mod tests {
                 .normalized_parameter_at(3.0)
                 .is_err()
         );
+    }
+
+    #[test]
+    fn uv_interval_divides_u_major_and_ends_exactly() {
+        let d = UvInterval::new(Interval::new(0.0, 0.3), Interval::new(2.0, -1.0));
+        let parts = d.divide(3, 2);
+        assert_eq!(parts.len(), 6);
+        assert_eq!(parts[0].u, parts[1].u);
+        assert_eq!(parts[1].v, Interval::new(0.5, -1.0));
+        assert_eq!(parts[5].u.t1, 0.3);
+        assert_eq!(parts[5].v.t1, -1.0);
+        for w in parts.windows(2) {
+            if w[0].u == w[1].u {
+                assert_eq!(w[0].v.t1, w[1].v.t0);
+            }
+        }
+        assert!(d.divide(0, 4).is_empty());
     }
 }

@@ -23,6 +23,7 @@ pub(crate) mod normal;
 pub(crate) mod offset;
 pub(crate) mod revolution;
 pub(crate) mod ruled;
+pub(crate) mod subsurface;
 pub(crate) mod sweep;
 
 use crate::curve::nurbs::basis::{MAX_DEGREE, MAX_ORDER, basis_functions, span_index};

@@ -9,6 +9,7 @@
 pub mod boolean;
 pub mod comparison;
 pub mod domain;
+pub mod domain2;
 pub mod functions;
 pub mod mass;
 pub mod operators;
@@ -26,6 +27,7 @@ pub fn register(registry: &mut NodeRegistry) {
     comparison::register(registry);
     boolean::register(registry);
     domain::register(registry);
+    domain2::register(registry);
     sequence::register(registry);
     script::register(registry);
     mass::register(registry);

@@ -1,4 +1,4 @@
-//! Params › Primitive: Number, Integer, Boolean, Text and Domain parameters.
+//! Params › Primitive: Number, Integer, Boolean, Text, Domain and Domain² parameters.
 //!
 //! Each has one list-access input and one list output of the same name and nickname; the
 //! graph tells them apart by direction (`Num` as an input is the values coming in, `Num` as
@@ -16,10 +16,12 @@ pub const BOOLEAN: &str = "params.boolean";
 pub const TEXT: &str = "params.text";
 /// Id of [`domain`].
 pub const DOMAIN: &str = "params.domain";
+/// Id of [`domain2`].
+pub const DOMAIN2: &str = "params.domain2";
 
 /// Registers the primitive parameters.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [number(), integer(), boolean(), text(), domain()] {
+    for t in [number(), integer(), boolean(), text(), domain(), domain2()] {
         registry.register(t);
     }
 }
@@ -122,6 +124,20 @@ pub fn domain() -> NodeType {
         "domains, numbers (x is the domain 0 to x) or text such as \"0 To 10\"",
     )
     .gh_guid("15b7afe5-d0d0-43e1-b894-34fcfe3be384")
+}
+
+/// Domain² \[Domain²\]: a collection of two-dimensional domains.
+pub fn domain2() -> NodeType {
+    parameter(
+        DOMAIN2,
+        "Domain²",
+        "Domain²",
+        DataType::Domain2,
+        "Contains a collection of two-dimensional domains (a u and a v domain each).",
+        "two-dimensional domains, domains (used for both u and v), numbers (0 to x in both) \
+         or surfaces (their domains)",
+    )
+    .gh_guid("90744326-eb53-4a0e-b7ef-4b45f5473d6e")
 }
 
 #[cfg(test)]

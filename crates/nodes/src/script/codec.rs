@@ -658,6 +658,10 @@ mod tests {
             Value::Vector(Vector3::new(0.0, -1e-300, 7.0)),
             Value::Plane(plane),
             Value::Domain(Interval::new(2.0, -1.0)),
+            Value::Domain2(locus_kernel::UvInterval::new(
+                Interval::new(2.0, -1.0),
+                Interval::new(0.1, 0.7),
+            )),
             Value::Transform(Transform::from_rows([
                 [1.0, 2.0, 3.0, 4.0],
                 [0.5, 0.25, 0.125, 0.0],

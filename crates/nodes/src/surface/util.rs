@@ -1,10 +1,10 @@
-//! Surface › Util: Divide Surface, Iso Curve and Offset Surface.
+//! Surface › Util: Divide Surface, Iso Curve, Offset Surface and Isotrim.
 //!
 //! Grasshopper files Iso Curve under Curve › Spline; here it sits with the other nodes that
 //! take a surface and a {uv} (**decision**, so that the Curve category stays as it is).
 
 use locus_kernel::tolerance::{DOCUMENT_TOLERANCE, ZERO_TOLERANCE};
-use locus_kernel::{Curve, Point3, SurfaceDirection, Vector3};
+use locus_kernel::{Curve, Interval, Point3, SurfaceDirection, UvInterval, Vector3};
 use locus_runtime::{
     Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Value,
     format_value,
@@ -18,6 +18,8 @@ pub const DIVIDE_SURFACE: &str = "surface.divide_surface";
 pub const ISO_CURVE: &str = "surface.iso_curve";
 /// Id of [`offset_surface`].
 pub const OFFSET_SURFACE: &str = "surface.offset_surface";
+/// Id of [`isotrim`].
+pub const ISOTRIM: &str = "surface.isotrim";
 
 /// The largest number of points Divide Surface makes for one surface: (U + 1)·(V + 1).
 pub const MAX_GRID_POINTS: u64 = 10_000_000;
@@ -27,6 +29,7 @@ pub fn register(registry: &mut NodeRegistry) {
     registry.register(divide_surface());
     registry.register(iso_curve());
     registry.register(offset_surface());
+    registry.register(isotrim());
 }
 
 /// A division count: a positive integer.
@@ -220,6 +223,66 @@ pub fn offset_surface() -> NodeType {
         })
 }
 
+/// Isotrim \[SubSrf\]: the part of a surface over a rectangle of its parameters.
+pub fn isotrim() -> NodeType {
+    NodeType::new(ISOTRIM, "Isotrim", "SubSrf", "Surface")
+        .gh_guid("6a9ccaab-1b03-484e-bbda-be9c81584a66")
+        .subcategory("Util")
+        .description(
+            "The part of a surface over a two-dimensional domain of its parameters, an exact \
+             NURBS surface that keeps the parameters: its domain is D, and every point has \
+             the parameters it had on the whole surface. Each of D's intervals is taken in \
+             increasing order (a decreasing interval cuts the same part). A part reaching \
+             past the surface's domain is cut at the domain, with a warning; a part of zero \
+             width, or wholly outside, is an error. With Divide Domain² on the surface this \
+             cuts it into panels.",
+        )
+        .input(surface_port("Base surface."))
+        .input(Port::new("Domain", "D", DataType::Domain2).doc(
+            "The rectangle of parameters to keep, in the surface's domain (see Divide Domain²).",
+        ))
+        .output(surface_port("The part of the surface over D."))
+        .solve(|s| {
+            let surface = surface_input(s, 0)?;
+            let d = *s.item::<UvInterval>(1)?;
+            let mut clipped = false;
+            let mut part = |name: &str, want: Interval, have: Interval| {
+                if !want.is_finite() {
+                    return Err(NodeError(format!(
+                        "input D: the {name} interval {} to {} is not finite",
+                        want.t0, want.t1
+                    )));
+                }
+                let (lo, hi) = (want.min().max(have.min()), want.max().min(have.max()));
+                if lo != want.min() || hi != want.max() {
+                    clipped = true;
+                }
+                if lo >= hi {
+                    return Err(NodeError(format!(
+                        "input D: the {name} interval {} to {} leaves nothing of the \
+                         surface's {name} domain {} to {}",
+                        want.t0, want.t1, have.t0, have.t1
+                    )));
+                }
+                Ok(Interval::new(lo, hi))
+            };
+            let u = part("u", d.u, surface.domain_u())?;
+            let v = part("v", d.v, surface.domain_v())?;
+            if clipped {
+                s.warning(format!(
+                    "input D reaches past the surface's domain; cut to {} × {}",
+                    format_value(&Value::Domain(u)),
+                    format_value(&Value::Domain(v))
+                ));
+            }
+            let sub = surface
+                .sub_surface(u, v)
+                .map_err(|e| NodeError(format!("input S: {e}")))?;
+            s.set(0, Shared::new(sub));
+            Ok(())
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use std::f64::consts::{FRAC_PI_2, TAU};
@@ -397,5 +460,54 @@ mod tests {
             panic!("{:?}", r.messages)
         };
         assert!(o.point_at(1.0, 1.5).distance(Point3::new(1.0, 1.5, -2.5)) < 1e-12);
+    }
+
+    #[test]
+    fn isotrim_keeps_the_parameters_and_cuts_at_the_domain() {
+        let sphere = sphere(2.0);
+        let (du, dv) = (sphere.domain_u(), sphere.domain_v());
+        let d = UvInterval::new(
+            Interval::new(du.parameter_at(0.6), du.parameter_at(0.1)),
+            Interval::new(dv.parameter_at(0.2), dv.parameter_at(0.5)),
+        );
+        let r = NodeCall::new(&isotrim())
+            .input(DataTree::from_item(sphere.clone()))
+            .input(DataTree::from_item(d))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let Some(Value::Surface(part)) = r.outputs[0].values().next().flatten() else {
+            panic!("{:?}", r.outputs[0])
+        };
+        assert_eq!(part.domain_u(), Interval::new(d.u.t1, d.u.t0));
+        assert_eq!(part.domain_v(), d.v);
+        let (pu, pv) = (du.parameter_at(0.3), dv.parameter_at(0.4));
+        assert!(part.point_at(pu, pv).distance(sphere.point_at(pu, pv)) < 1e-12);
+        // Past the domain: cut, with a warning.
+        let past = UvInterval::new(Interval::new(du.t0 - 5.0, du.parameter_at(0.5)), dv);
+        let r = NodeCall::new(&isotrim())
+            .input(DataTree::from_item(sphere.clone()))
+            .input(DataTree::from_item(past))
+            .run();
+        assert_eq!(r.messages.len(), 1);
+        assert_eq!(r.messages[0].level, Level::Warning);
+        assert_eq!(r.outputs[0].item_count(), 1);
+        // Nothing left, or not finite: errors.
+        for bad in [
+            UvInterval::new(Interval::new(du.t1 + 1.0, du.t1 + 2.0), dv),
+            UvInterval::new(Interval::new(0.5, 0.5), dv),
+            UvInterval::new(du, Interval::new(f64::NAN, 1.0)),
+        ] {
+            let r = NodeCall::new(&isotrim())
+                .input(DataTree::from_item(sphere.clone()))
+                .input(DataTree::from_item(bad))
+                .run();
+            assert_eq!(r.messages.len(), 1, "{bad:?}");
+            assert_eq!(r.messages[0].level, Level::Error);
+            assert!(
+                r.messages[0].text.starts_with("input D:"),
+                "{}",
+                r.messages[0].text
+            );
+        }
     }
 }

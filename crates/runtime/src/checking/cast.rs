@@ -18,7 +18,7 @@ use std::fmt;
 
 use locus_kernel::{
     Arc as ArcCurve, Brep, Circle, Color, Curve, Interval, Line, Mesh, NurbsSurface, OrientedBox,
-    Plane, Point3, Vector3,
+    Plane, Point3, UvInterval, Vector3,
 };
 
 use crate::checking::cast_geometry::{
@@ -53,6 +53,8 @@ pub fn can_cast(from: DataType, to: DataType) -> bool {
             | (Boolean, Integer | Number)
             | (Integer | Number, Boolean)
             | (Number | Integer, Domain)
+            | (Number | Integer | Domain | Surface | Brep, Domain2)
+            | (Domain2, Text)
             | (Point, Vector)
             | (Vector, Point)
             | (Point, Plane)
@@ -329,6 +331,20 @@ cast_table! {
     Plane(Plane) => Text(String) = |p: &Plane| Some(format_plane(p));
     Domain(Interval) => Number(f64) = |d: &Interval| Some(d.length());
     Domain(Interval) => Text(String) = |d: &Interval| Some(format_domain(*d));
+    Number(f64) => Domain2(UvInterval) =
+        |x: &f64| number_to_domain(x).map(|d| UvInterval::new(d, d));
+    Integer(i64) => Domain2(UvInterval) = |i: &i64| {
+        let d = Interval::new(0.0, *i as f64);
+        Some(UvInterval::new(d, d))
+    };
+    Domain(Interval) => Domain2(UvInterval) = |d: &Interval| Some(UvInterval::new(*d, *d));
+    Surface(Shared<NurbsSurface>) => Domain2(UvInterval) =
+        |s: &Shared<NurbsSurface>| Some(UvInterval::new(s.domain_u(), s.domain_v()));
+    Brep(Shared<Brep>) => Domain2(UvInterval) = |b: &Shared<Brep>| {
+        brep_to_surface(b).map(|s| UvInterval::new(s.domain_u(), s.domain_v()))
+    };
+    Domain2(UvInterval) => Text(String) =
+        |d: &UvInterval| Some(format_value(&Value::Domain2(*d)));
     Transform(locus_kernel::Transform) => Text(String) =
         |t: &locus_kernel::Transform| Some(format_transform(t));
     Point(Point3) => Box(OrientedBox) = point_to_box;
@@ -461,6 +477,10 @@ mod tests {
             DataType::Vector => vec![Value::Vector(Vector3::new(1.0, 2.0, 3.0))],
             DataType::Plane => vec![Value::Plane(Plane::WORLD_YZ)],
             DataType::Domain => vec![Value::Domain(Interval::new(1.0, 4.0))],
+            DataType::Domain2 => vec![Value::Domain2(UvInterval::new(
+                Interval::new(1.0, 4.0),
+                Interval::new(0.0, -2.0),
+            ))],
             DataType::Transform => vec![Value::Transform(Transform::IDENTITY)],
             DataType::Box => vec![Value::Box(OrientedBox::new(
                 Plane::WORLD_XY,

@@ -20,6 +20,7 @@
 //! | Text | `"abc"` with RON escapes (`\"`, `\\`, `\n`, `\u{e9}`) |
 //! | Point, Vector | `(1, 2, 3)` |
 //! | Domain | `(0, 1)`, start then end |
+//! | Domain2 | `((u0, u1), (v0, v1))`: the u domain, then the v domain |
 //! | Plane | `((ox, oy, oz), (xx, xy, xz), (yx, yy, yz))`: origin, x axis, y axis; or `XY`, `YZ`, `XZ`, `ZX` |
 //! | Transform | `((a, b, c, d), (e, f, g, h), (i, j, k, l), (m, n, o, p))`: four rows |
 //! | Line, Box, Circle, Arc, Curve, Surface, Brep | see `literal_geometry.rs` |
@@ -28,8 +29,8 @@
 //! `Box(plane: XY, …)`. A tag of another type than the port's reads the item as that type and
 //! casts it to the port's type as a wire would (`Box(…)` on a Brep port). On a `Generic` port
 //! the type is taken from the tag, or else from the shape: an integer without decimal point is
-//! an Integer, other numbers are Numbers, `(x, y, z)` is a Point, `(a, b)` a Domain, two triples
-//! a Line, three triples a Plane, four quadruples a Transform, and a struct by its field names.
+//! an Integer, other numbers are Numbers, `(x, y, z)` is a Point, `(a, b)` a Domain, two pairs a
+//! Domain2, two triples a Line, three triples a Plane, four quadruples a Transform, and a struct by its field names.
 //! The writer tags vectors in generic trees so that they read back as vectors.
 //!
 //! The axes of a plane are taken as written when they are orthonormal to within
@@ -42,7 +43,7 @@
 use std::fmt;
 use std::ops::Range;
 
-use locus_kernel::{Interval, Plane, Point3, Transform, Vector3};
+use locus_kernel::{Interval, Plane, Point3, Transform, UvInterval, Vector3};
 
 use crate::file::syntax::{self, Kind, Node};
 use crate::{Branch, DataTree, DataType, Literal, TreePath, Value};
@@ -172,6 +173,7 @@ fn expectation(data_type: DataType) -> &'static str {
         DataType::Vector => "a vector (x, y, z)",
         DataType::Plane => "a plane ((origin), (x axis), (y axis)) or XY, YZ, XZ, ZX",
         DataType::Domain => "a domain (start, end)",
+        DataType::Domain2 => "a two-dimensional domain ((u0, u1), (v0, v1))",
         DataType::Transform => "a transform of four rows ((a, b, c, d), …)",
         DataType::Box => "a box (plane: …, x: (x0, x1), y: (y0, y1), z: (z0, z1))",
         DataType::Line => "a line ((start), (end))",
@@ -333,6 +335,14 @@ pub(crate) fn parse_item(node: &Node, data_type: DataType) -> Result<Option<Valu
             let [t0, t1] = numbers(node, data_type)?;
             Value::Domain(Interval::new(t0, t1))
         }
+        DataType::Domain2 => {
+            let [[u0, u1], [v0, v1]] =
+                tuple_of::<2, _>(node, data_type, |pair| numbers::<2>(pair, data_type))?;
+            Value::Domain2(UvInterval::new(
+                Interval::new(u0, u1),
+                Interval::new(v0, v1),
+            ))
+        }
         DataType::Plane => Value::Plane(plane(node)?),
         DataType::Transform => {
             let rows = tuple_of::<4, _>(node, DataType::Transform, |row| {
@@ -380,6 +390,7 @@ fn infer_item(node: &Node) -> Result<Option<Value>, LiteralError> {
             let is_tuple_of = |len: usize| move |n: &Node| matches!(&n.kind, Kind::Tuple(None, v) if v.len() == len && v.iter().all(is_number));
             match items.len() {
                 2 if all(is_number) => DataType::Domain,
+                2 if items.iter().all(is_tuple_of(2)) => DataType::Domain2,
                 2 if items.iter().all(is_tuple_of(3)) => DataType::Line,
                 3 if all(is_number) => DataType::Point,
                 3 if items.iter().all(is_tuple_of(3)) => DataType::Plane,
@@ -389,7 +400,7 @@ fn infer_item(node: &Node) -> Result<Option<Value>, LiteralError> {
                         node,
                         format!(
                             "cannot tell the type of {}: write a point (x, y, z), a domain \
-                             (start, end), a line of two triples, a plane of three triples or a \
+                             (start, end), a Domain2 of two pairs, a line of two triples, a plane of three triples or a \
                              transform of four rows, or tag it as in Vector(1, 2, 3)",
                             node.describe()
                         ),
@@ -558,6 +569,13 @@ pub(crate) fn item_node(value: &Value, in_generic: bool) -> Result<Node, Literal
             Node::new(Kind::Tuple(tag, v.to_array().map(number_node).to_vec()))
         }
         Value::Domain(d) => numbers_node([d.t0, d.t1]),
+        Value::Domain2(d) => Node::new(Kind::Tuple(
+            None,
+            vec![
+                numbers_node([d.u.t0, d.u.t1]),
+                numbers_node([d.v.t0, d.v.t1]),
+            ],
+        )),
         Value::Plane(p) => plane_node(p),
         Value::Transform(t) => Node::new(Kind::Tuple(None, t.to_rows().map(numbers_node).to_vec())),
         other => match crate::file::literal_geometry::geometry_node(other) {

@@ -157,6 +157,7 @@ pub fn format_value(value: &Value) -> String {
         Value::Vector(v) => format_vector(*v),
         Value::Plane(p) => format_plane(p),
         Value::Domain(d) => format_domain(*d),
+        Value::Domain2(d) => format!("{} × {}", format_domain(d.u), format_domain(d.v)),
         Value::Transform(t) => format_transform(t),
         Value::Box(b) => format!(
             "Box (O:{} sizes {} × {} × {})",
