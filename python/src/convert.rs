@@ -44,10 +44,14 @@ pub(crate) fn value_to_py<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound
         Value::Plane(p) => Bound::new(py, PyPlane(*p))?.into_any(),
         Value::Domain(d) => Bound::new(py, PyDomain(*d))?.into_any(),
         // A Domain² as the tuple of its u and v domains.
-        Value::Domain2(d) => {
-            PyTuple::new(py, [Bound::new(py, PyDomain(d.u))?, Bound::new(py, PyDomain(d.v))?])?
-                .into_any()
-        }
+        Value::Domain2(d) => PyTuple::new(
+            py,
+            [
+                Bound::new(py, PyDomain(d.u))?,
+                Bound::new(py, PyDomain(d.v))?,
+            ],
+        )?
+        .into_any(),
         Value::Transform(t) => Bound::new(py, PyTransform(*t))?.into_any(),
         Value::Box(b) => Bound::new(py, PyBox(*b))?.into_any(),
         Value::Surface(s) => Bound::new(py, PySurface(s.clone()))?.into_any(),
