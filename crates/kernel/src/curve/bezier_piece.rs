@@ -12,6 +12,9 @@ pub(crate) struct BezierPiece {
     pub(crate) a: f64,
     pub(crate) b: f64,
     degree: usize,
+    /// Whether some weight of the span differs from 1; when none does, every `w` is exactly 1
+    /// and evaluation skips the quotient rule.
+    rational: bool,
     /// Homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
     points: [[f64; 4]; MAX_ORDER],
 }
@@ -26,8 +29,10 @@ impl NurbsCurve {
         let knots = &self.knots()[first..first + 2 * degree];
         let (a, b) = (self.knots()[span], self.knots()[span + 1]);
         let mut homogeneous = [[0.0; 4]; MAX_ORDER];
+        let mut rational = false;
         for (i, h) in homogeneous[..=degree].iter_mut().enumerate() {
             let (q, w) = (self.points()[first + i], self.weights()[first + i]);
+            rational |= w != 1.0;
             *h = [q.x * w, q.y * w, q.z * w, w];
         }
         let mut points = [[0.0; 4]; MAX_ORDER];
@@ -36,10 +41,17 @@ impl NurbsCurve {
         } else {
             blossoms::<MAX_ORDER>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
         }
+        if !rational {
+            // (1 − α)·1 + α·1 may round away from 1.
+            for q in &mut points[..=degree] {
+                q[3] = 1.0;
+            }
+        }
         BezierPiece {
             a,
             b,
             degree,
+            rational,
             points,
         }
     }
@@ -100,6 +112,51 @@ impl BezierPiece {
         sum
     }
 
+    /// The two halves of the piece, split at the middle of `[a, b]` by de Casteljau's algorithm
+    /// on the homogeneous points (exact up to rounding; each half lies in the convex hull of its
+    /// own control points, which is tighter than the whole's).
+    pub(crate) fn halves(&self) -> [BezierPiece; 2] {
+        let p = self.degree;
+        let mid = 0.5 * (self.a + self.b);
+        let mut left = BezierPiece {
+            a: self.a,
+            b: mid,
+            ..*self
+        };
+        let mut right = BezierPiece {
+            a: mid,
+            b: self.b,
+            ..*self
+        };
+        let mut q = self.points;
+        left.points[0] = q[0];
+        right.points[p] = q[p];
+        for level in 1..=p {
+            for i in 0..=p - level {
+                q[i] = std::array::from_fn(|c| 0.5 * (q[i][c] + q[i + 1][c]));
+            }
+            left.points[level] = q[0];
+            right.points[p - level] = q[p - level];
+        }
+        [left, right]
+    }
+
+    /// Whether every point of the piece is farther from `p` than `sqrt(limit)`, by the boxes of
+    /// its control points after `depth` halvings: a piece is ruled out when its own box is
+    /// beyond `limit`, or when both its halves are ruled out with one halving less. The test
+    /// may answer no for a piece that is in fact beyond (it is a bound), never yes for a piece
+    /// that is not.
+    pub(crate) fn is_beyond(&self, p: Point3, limit: f64, depth: u32) -> bool {
+        if self.box_distance_squared(p) > limit {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        let [left, right] = self.halves();
+        left.is_beyond(p, limit, depth - 1) && right.is_beyond(p, limit, depth - 1)
+    }
+
     /// The point (as a vector) and the first and second derivatives at `t`.
     pub(crate) fn derivatives(&self, t: f64) -> [Vector3; 3] {
         if self.degree < 4 {
@@ -112,8 +169,8 @@ impl BezierPiece {
     /// [`BezierPiece::derivatives`] with an `N > degree`-sized working copy of the points.
     fn derivatives_with<const N: usize>(&self, t: f64) -> [Vector3; 3] {
         let p = self.degree;
-        let h = self.b - self.a;
-        let s = (t - self.a) / h;
+        let inv_h = 1.0 / (self.b - self.a);
+        let s = (t - self.a) * inv_h;
         let lerp = |x: [f64; 4], y: [f64; 4]| {
             [
                 x[0] + s * (y[0] - x[0]),
@@ -123,7 +180,7 @@ impl BezierPiece {
             ]
         };
         let mut q = [[0.0; 4]; N];
-        q[..=p].copy_from_slice(&self.points[..=p]);
+        q.copy_from_slice(&self.points[..N]);
         // Down to three points (two for a line), keeping the last levels for the derivatives.
         for level in 1..=p.saturating_sub(2) {
             for i in 0..=p - level {
@@ -131,22 +188,26 @@ impl BezierPiece {
             }
         }
         let (second, r0, r1) = if p >= 2 {
-            let k = (p * (p - 1)) as f64 / (h * h);
+            let k = (p * (p - 1)) as f64 * (inv_h * inv_h);
             let second: [f64; 4] = std::array::from_fn(|c| k * (q[0][c] - 2.0 * q[1][c] + q[2][c]));
             (second, lerp(q[0], q[1]), lerp(q[1], q[2]))
         } else {
             ([0.0; 4], q[0], q[1])
         };
-        let k = p as f64 / h;
+        let k = p as f64 * inv_h;
         let first: [f64; 4] = std::array::from_fn(|c| k * (r1[c] - r0[c]));
         let point = lerp(r0, r1);
-        // The quotient rule for C = A / w.
-        let w = point[3];
-        let c0 = Vector3::new(point[0], point[1], point[2]) / w;
+        let c0 = Vector3::new(point[0], point[1], point[2]);
         let a1 = Vector3::new(first[0], first[1], first[2]);
         let a2 = Vector3::new(second[0], second[1], second[2]);
-        let c1 = (a1 - c0 * first[3]) / w;
-        let c2 = (a2 - c1 * (2.0 * first[3]) - c0 * second[3]) / w;
+        if !self.rational {
+            return [c0, a1, a2];
+        }
+        // The quotient rule for C = A / w.
+        let inv_w = 1.0 / point[3];
+        let c0 = c0 * inv_w;
+        let c1 = (a1 - c0 * first[3]) * inv_w;
+        let c2 = (a2 - c1 * (2.0 * first[3]) - c0 * second[3]) * inv_w;
         [c0, c1, c2]
     }
 }
@@ -186,6 +247,27 @@ mod tests {
                         );
                     }
                     assert!(piece.box_distance_squared(c.point_at(t)) <= 1e-26);
+                }
+                for (k, half) in piece.halves().iter().enumerate() {
+                    assert_eq!(
+                        half.a,
+                        if k == 0 {
+                            piece.a
+                        } else {
+                            0.5 * (piece.a + piece.b)
+                        }
+                    );
+                    for j in 0..=8 {
+                        let t = half.a + (half.b - half.a) * j as f64 / 8.0;
+                        let (x, y) = (half.derivatives(t)[0], piece.derivatives(t)[0]);
+                        assert!(
+                            (x - y).length() <= 1e-11 * (1.0 + x.length()),
+                            "{x:?} {y:?}"
+                        );
+                        let on = c.point_at(t);
+                        assert!(half.box_distance_squared(on) <= 1e-26);
+                        assert!(!piece.is_beyond(on, 1e-20, 3));
+                    }
                 }
                 let beside = c.point_at(piece.a) + Vector3::new(0.0, 0.0, 50.0);
                 assert!(piece.box_distance_squared(beside) > 1.0);

@@ -469,6 +469,13 @@ mod tests {
             lengths in prop::collection::vec(5.0f64..20.0, 7),
             radius in 0.05f64..1.0,
         ) {
+            // Long enough: each segment holds the trims r·tan(φ/2) of the corners at its ends
+            // (turns near 2.6 with a radius near 1 trim 3.4 each, more than a 5-long segment).
+            let trim = |i: usize| turns.get(i).map_or(0.0, |phi| radius * (phi / 2.0).tan());
+            for (i, length) in lengths.iter().enumerate().take(turns.len() + 1) {
+                let before = if i == 0 { 0.0 } else { trim(i - 1) };
+                prop_assume!(before + trim(i) < *length);
+            }
             let mut points = vec![p(0.0, 0.0)];
             let mut heading = 0.0f64;
             let mut at = p(0.0, 0.0);
