@@ -18,8 +18,8 @@
 //!
 //! The smallest distance wins.
 
-use crate::curve::bezier_piece::blossoms;
 use crate::curve::nurbs::basis::{MAX_ORDER, basis_functions, span_index};
+use crate::surface::bezier_patch::{BezierPatches, MAX_PATCH_DEGREE, bernstein_table};
 use crate::surface::check_parameters;
 use crate::surface::direction::SurfaceDirection;
 use crate::surface::direction::SurfaceSide;
@@ -121,29 +121,54 @@ impl NurbsSurface {
             }
         }
 
-        // 1 and 2. The patches, nearest bound first.
+        // 1 and 2. The patches, nearest bound first. Up to bicubic, each patch that its
+        // B-spline box lets through is converted to Bézier form (two small products with the
+        // spans' extraction matrices), which gives a tighter box and its sample grid.
         let mut order: Vec<usize> = (0..nu * nv).collect();
         order.sort_by(|&x, &y| bounds[x].total_cmp(&bounds[y]));
         let samples_u = samples_per_span(self.degree_u());
         let samples_v = samples_per_span(self.degree_v());
         let mut grid = vec![0.0; samples_u * samples_v];
+        let spans_u: Vec<usize> = breaks_u[..nu]
+            .iter()
+            .map(|&t| span_index(self.degree_u(), self.knots_u(), t))
+            .collect();
+        let spans_v: Vec<usize> = breaks_v[..nv]
+            .iter()
+            .map(|&t| span_index(self.degree_v(), self.knots_v(), t))
+            .collect();
+        let bezier = self.degree_u() <= MAX_PATCH_DEGREE && self.degree_v() <= MAX_PATCH_DEGREE;
+        let mut patches = BezierPatches::new(self, &spans_u, &spans_v);
+        let mut bernstein_u = [[0.0; MAX_PATCH_DEGREE + 1]; MAX_SAMPLES];
+        let mut bernstein_v = [[0.0; MAX_PATCH_DEGREE + 1]; MAX_SAMPLES];
+        if bezier {
+            bernstein_table(self.degree_u(), samples_u, &mut bernstein_u);
+            bernstein_table(self.degree_v(), samples_v, &mut bernstein_v);
+        }
         for &index in &order {
             if bounds[index] > best.distance_squared {
                 break;
             }
             let (a, b) = (index / nv, index % nv);
-            // The tighter bound of the patch's Bézier control points, once the box of its
-            // B-spline control points has let it through.
-            let su = span_index(self.degree_u(), self.knots_u(), breaks_u[a]);
-            let sv = span_index(self.degree_v(), self.knots_v(), breaks_v[b]);
-            if self.bezier_patch_box_distance_squared(su, sv, test) > best.distance_squared {
-                continue;
-            }
             let rect = Rect {
                 u: [breaks_u[a], breaks_u[a + 1]],
                 v: [breaks_v[b], breaks_v[b + 1]],
             };
-            self.search_patch(test, rect, [samples_u, samples_v], &mut grid, &mut best);
+            if bezier {
+                let patch = patches.get(a, b);
+                if patch.box_distance_squared(test) > best.distance_squared {
+                    continue;
+                }
+                patch.grid_distances_squared(
+                    test,
+                    &bernstein_u[..samples_u],
+                    &bernstein_v[..samples_v],
+                    &mut grid,
+                );
+            } else {
+                self.sample_grid(test, rect, [samples_u, samples_v], &mut grid);
+            }
+            self.polish_grid_minima(test, rect, [samples_u, samples_v], &grid, &mut best);
         }
 
         // 3. Boundary curves and creases, one dimension at a time.
@@ -177,6 +202,21 @@ impl NurbsSurface {
                     };
                     if bound > best.distance_squared {
                         continue;
+                    }
+                    if bezier {
+                        // The line is an edge of the patch, a Bézier curve whose control points
+                        // are the patch's on that side.
+                        let (a, b) = match direction {
+                            SurfaceDirection::U => (fixed_patch, c),
+                            SurfaceDirection::V => (c, fixed_patch),
+                        };
+                        let at_end = fixed >= fixed_breaks[fixed_patch + 1];
+                        let edge = patches
+                            .get(a, b)
+                            .edge_box_distance_squared(direction, at_end, test);
+                        if edge > best.distance_squared {
+                            continue;
+                        }
                     }
                     let range = [free_breaks[c], free_breaks[c + 1]];
                     self.search_line(test, direction, fixed, range, samples, &mut best);
@@ -255,68 +295,23 @@ impl NurbsSurface {
         })
     }
 
-    /// The squared distance from `test` to the axis-aligned box of the Bézier control points of
-    /// the patch of spans `su` × `sv` (its rows converted to Bézier form in `v`, then its
-    /// columns in `u`, homogeneously; the patch lies in their convex hull for positive
-    /// weights). Degrees above 3 get the bound 0 (no pruning beyond the B-spline box).
-    fn bezier_patch_box_distance_squared(&self, su: usize, sv: usize, test: Point3) -> f64 {
-        const N: usize = 4;
-        let (p, q) = (self.degree_u(), self.degree_v());
-        if p >= N || q >= N {
-            return 0.0;
-        }
-        let (first_u, first_v) = (su + 1 - p, sv + 1 - q);
-        let knots_u = &self.knots_u()[first_u..first_u + 2 * p];
-        let knots_v = &self.knots_v()[first_v..first_v + 2 * q];
-        let range_u = [self.knots_u()[su], self.knots_u()[su + 1]];
-        let range_v = [self.knots_v()[sv], self.knots_v()[sv + 1]];
-        let mut rows = [[[0.0; 4]; N]; N];
-        for (i, row) in rows[..=p].iter_mut().enumerate() {
-            let mut homogeneous = [[0.0; 4]; N];
-            for (j, h) in homogeneous[..=q].iter_mut().enumerate() {
-                let k = (first_u + i) * self.count_v() + first_v + j;
-                let (pt, w) = (self.points[k], self.weights[k]);
-                *h = [pt.x * w, pt.y * w, pt.z * w, w];
-            }
-            blossoms::<N>(q, knots_v, range_v, &homogeneous[..=q], &mut row[..=q]);
-        }
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        // Column j of the rows, gathered across them: an index loop reads more plainly here.
-        #[allow(clippy::needless_range_loop)]
-        for j in 0..=q {
-            let column: [[f64; 4]; N] = std::array::from_fn(|i| rows[i][j]);
-            let mut bezier = [[0.0; 4]; N];
-            blossoms::<N>(p, knots_u, range_u, &column[..=p], &mut bezier[..=p]);
-            for h in &bezier[..=p] {
-                for c in 0..3 {
-                    let v = h[c] / h[3];
-                    lo[c] = lo[c].min(v);
-                    hi[c] = hi[c].max(v);
-                }
-            }
-        }
-        let mut sum = 0.0;
-        for (c, x) in test.to_array().into_iter().enumerate() {
-            let d = (lo[c] - x).max(x - hi[c]).max(0.0);
-            sum += d * d;
-        }
-        sum
-    }
-
     /// Samples one patch and polishes its best discrete local minima.
     fn search_patch(
         &self,
         test: Point3,
         rect: Rect,
-        [nu, nv]: [usize; 2],
+        samples: [usize; 2],
         grid: &mut [f64],
         best: &mut Best,
     ) {
-        let param = |range: [f64; 2], k: usize, n: usize| {
-            let s = k as f64 / (n - 1) as f64;
-            (1.0 - s) * range[0] + s * range[1]
-        };
+        self.sample_grid(test, rect, samples, grid);
+        self.polish_grid_minima(test, rect, samples, grid, best);
+    }
+
+    /// The squared distances from `test` of the `nu × nv` grid of points of `rect` (row-major
+    /// into `grid`), by the basis functions.
+    fn sample_grid(&self, test: Point3, rect: Rect, [nu, nv]: [usize; 2], grid: &mut [f64]) {
+        let param = grid_parameter;
         // The basis functions of each sample column once, then each row's combination.
         let (p, q) = (self.degree_u(), self.degree_v());
         let mut basis_v = [[0.0; MAX_ORDER]; MAX_SAMPLES];
@@ -351,6 +346,19 @@ impl NurbsSurface {
                 grid[i * nv + j] = Point3::new(x / w, y / w, z / w).distance_squared(test);
             }
         }
+    }
+
+    /// Polishes the best [`STARTS_PER_PATCH`] discrete local minima of the sampled `grid` of
+    /// `rect`.
+    fn polish_grid_minima(
+        &self,
+        test: Point3,
+        rect: Rect,
+        [nu, nv]: [usize; 2],
+        grid: &[f64],
+        best: &mut Best,
+    ) {
+        let param = grid_parameter;
         let mut starts: Vec<(f64, usize, usize)> = Vec::new();
         for i in 0..nu {
             for j in 0..nv {
@@ -422,22 +430,24 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nu = (u + alpha * su).clamp(rect.u[0], rect.u[1]);
                 let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
-                let p = self.point_at(nu, nv);
-                let nf = p.distance_squared(test);
-                if nf <= f + rounding_noise(p, test, f) {
-                    accepted = Some((nu, nv, nf));
+                // The derivatives at once (the first step is nearly always taken, and its
+                // derivatives are the next iteration's).
+                let nd = self.derivatives_unchecked(nu, nv, 2);
+                let nf = nd.point.distance_squared(test);
+                if nf <= f + rounding_noise(nd.point, test, f) {
+                    accepted = Some((nu, nv, nf, nd));
                     break;
                 }
                 alpha *= 0.5;
             }
-            let Some((nu, nv, nf)) = accepted else {
+            let Some((nu, nv, nf, nd)) = accepted else {
                 break;
             };
             let small = (nu - u).abs() <= tol_u && (nv - v).abs() <= tol_v;
             u = nu;
             v = nv;
             f = nf;
-            d = self.derivatives_unchecked(u, v, 2);
+            d = nd;
             r = d.point - test;
             if small {
                 break;
@@ -521,20 +531,19 @@ impl NurbsSurface {
             for _ in 0..MAX_HALVINGS {
                 let nt = (t + alpha * s).clamp(range[0], range[1]);
                 let (u, v) = uv(nt);
-                let p = self.point_at(u, v);
-                if p.distance_squared(test) <= f + rounding_noise(p, test, f) {
-                    accepted = Some(nt);
+                let nd = self.derivatives_unchecked(u, v, 2);
+                if nd.point.distance_squared(test) <= f + rounding_noise(nd.point, test, f) {
+                    accepted = Some((nt, nd));
                     break;
                 }
                 alpha *= 0.5;
             }
-            let Some(nt) = accepted else {
+            let Some((nt, nd)) = accepted else {
                 break;
             };
             let small = (nt - t).abs() <= tol;
             t = nt;
-            let (u, v) = uv(t);
-            d = self.derivatives_unchecked(u, v, 2);
+            d = nd;
             if small {
                 break;
             }
@@ -558,6 +567,12 @@ fn rounding_noise(point: Point3, test: Point3, f: f64) -> f64 {
 
 /// The most samples per span and direction.
 const MAX_SAMPLES: usize = 16;
+
+/// Sample `k` of `n` over `range`: its start at 0, its end at `n − 1`.
+fn grid_parameter(range: [f64; 2], k: usize, n: usize) -> f64 {
+    let s = k as f64 / (n - 1) as f64;
+    (1.0 - s) * range[0] + s * range[1]
+}
 
 /// The number of samples per span and direction for a degree: enough to separate the local
 /// minima a polynomial of that degree can have.
@@ -591,24 +606,33 @@ fn step_2d(g: [f64; 2], [huu, huv, hvv]: [f64; 3], [e, f, gg]: [f64; 3]) -> (f64
         .unwrap_or_else(|| (step_1d(g[0], huu, e), step_1d(g[1], hvv, gg)))
 }
 
-/// The squared distance from `p` to the axis-aligned box of `points`.
-fn box_distance_squared(points: impl Iterator<Item = Point3>, p: Point3) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
+/// The squared distance from `p` to the axis-aligned box of `points` (finite, as a valid
+/// surface's are: plain comparisons, which compile to single min/max instructions, suffice).
+fn box_distance_squared(mut points: impl Iterator<Item = Point3>, p: Point3) -> f64 {
+    let Some(first) = points.next() else {
+        return 0.0;
+    };
+    let (mut lo, mut hi) = (first.to_array(), first.to_array());
     for q in points {
         for (k, c) in q.to_array().into_iter().enumerate() {
-            lo[k] = lo[k].min(c);
-            hi[k] = hi[k].max(c);
+            lo[k] = if c < lo[k] { c } else { lo[k] };
+            hi[k] = if c > hi[k] { c } else { hi[k] };
         }
     }
-    p.to_array()
-        .into_iter()
-        .enumerate()
-        .map(|(k, c)| {
-            let d = (lo[k] - c).max(c - hi[k]).max(0.0);
-            d * d
-        })
-        .sum()
+    let mut sum = 0.0;
+    for (k, c) in p.to_array().into_iter().enumerate() {
+        let below = lo[k] - c;
+        let above = c - hi[k];
+        let d = if below > 0.0 {
+            below
+        } else if above > 0.0 {
+            above
+        } else {
+            0.0
+        };
+        sum += d * d;
+    }
+    sum
 }
 
 #[cfg(test)]

@@ -108,20 +108,28 @@ fn bezier_patch_boxes_hold_their_patches() {
             s.span_breaks(SurfaceDirection::U),
             s.span_breaks(SurfaceDirection::V),
         );
-        for a in bu.windows(2) {
-            for b in bv.windows(2) {
-                let su = span_index(s.degree_u(), s.knots_u(), a[0]);
-                let sv = span_index(s.degree_v(), s.knots_v(), b[0]);
+        let spans_u: Vec<usize> = bu[..bu.len() - 1]
+            .iter()
+            .map(|&t| span_index(s.degree_u(), s.knots_u(), t))
+            .collect();
+        let spans_v: Vec<usize> = bv[..bv.len() - 1]
+            .iter()
+            .map(|&t| span_index(s.degree_v(), s.knots_v(), t))
+            .collect();
+        let mut patches = BezierPatches::new(&s, &spans_u, &spans_v);
+        for (ia, a) in bu.windows(2).enumerate() {
+            for (ib, b) in bv.windows(2).enumerate() {
+                let patch = patches.get(ia, ib);
                 for i in 0..=6 {
                     for j in 0..=6 {
                         let u = a[0] + (a[1] - a[0]) * i as f64 / 6.0;
                         let v = b[0] + (b[1] - b[0]) * j as f64 / 6.0;
-                        let d = s.bezier_patch_box_distance_squared(su, sv, s.point_at(u, v));
+                        let d = patch.box_distance_squared(s.point_at(u, v));
                         assert!(d <= 1e-26, "({u}, {v}): {d}");
                     }
                 }
                 let above = s.point_at(a[0], b[0]) + Vector3::new(0.0, 0.0, 40.0);
-                assert!(s.bezier_patch_box_distance_squared(su, sv, above) > 1.0);
+                assert!(patch.box_distance_squared(above) > 1.0);
             }
         }
     }
