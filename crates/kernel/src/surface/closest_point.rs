@@ -23,7 +23,7 @@ use crate::surface::bezier_patch::{BezierPatches, MAX_PATCH_DEGREE, bernstein_ta
 use crate::surface::check_parameters;
 use crate::surface::direction::SurfaceDirection;
 use crate::surface::direction::SurfaceSide;
-use crate::{Error, NurbsSurface, Point3, Result};
+use crate::{Error, NurbsSurface, Point3, Result, SurfaceDerivatives};
 
 /// The closest point on a surface to a test point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -117,7 +117,7 @@ impl NurbsSurface {
             let su = span_index(self.degree_u(), self.knots_u(), start_u);
             for &start_v in &breaks_v[..nv] {
                 let sv = span_index(self.degree_v(), self.knots_v(), start_v);
-                bounds.push(box_distance_squared(self.span_points(su, sv), test));
+                bounds.push(self.span_box_distance_squared(su, sv, test));
             }
         }
 
@@ -128,6 +128,7 @@ impl NurbsSurface {
         order.sort_by(|&x, &y| bounds[x].total_cmp(&bounds[y]));
         let samples_u = samples_per_span(self.degree_u());
         let samples_v = samples_per_span(self.degree_v());
+        let samples = [samples_u, samples_v];
         let mut grid = vec![0.0; samples_u * samples_v];
         let spans_u: Vec<usize> = breaks_u[..nu]
             .iter()
@@ -155,7 +156,7 @@ impl NurbsSurface {
                 v: [breaks_v[b], breaks_v[b + 1]],
             };
             if bezier {
-                let patch = patches.get(a, b);
+                let patch = *patches.get(a, b);
                 if patch.box_distance_squared(test) > best.distance_squared {
                     continue;
                 }
@@ -165,10 +166,11 @@ impl NurbsSurface {
                     &bernstein_v[..samples_v],
                     &mut grid,
                 );
+                let evaluate = |u, v| patch.derivatives(u, v);
+                Self::polish_grid_minima(test, rect, samples, &grid, evaluate, &mut best);
             } else {
-                self.sample_grid(test, rect, [samples_u, samples_v], &mut grid);
+                self.search_patch(test, rect, samples, &mut grid, &mut best);
             }
-            self.polish_grid_minima(test, rect, [samples_u, samples_v], &grid, &mut best);
         }
 
         // 3. Boundary curves and creases, one dimension at a time.
@@ -295,6 +297,36 @@ impl NurbsSurface {
         })
     }
 
+    /// The squared distance from `p` to the axis-aligned box of the B-spline control points of
+    /// the patch of spans `su` × `sv` (finite, as a valid surface's are: plain comparisons,
+    /// which compile to single min/max instructions, suffice).
+    fn span_box_distance_squared(&self, su: usize, sv: usize, p: Point3) -> f64 {
+        let (i0, j0) = (su + 1 - self.degree_u(), sv + 1 - self.degree_v());
+        let first = self.points[i0 * self.count_v() + j0].to_array();
+        let (mut lo, mut hi) = (first, first);
+        for i in i0..=i0 + self.degree_u() {
+            let row = i * self.count_v() + j0;
+            for q in &self.points[row..=row + self.degree_v()] {
+                for (k, c) in q.to_array().into_iter().enumerate() {
+                    lo[k] = if c < lo[k] { c } else { lo[k] };
+                    hi[k] = if c > hi[k] { c } else { hi[k] };
+                }
+            }
+        }
+        let mut sum = 0.0;
+        for (k, c) in p.to_array().into_iter().enumerate() {
+            let d = if lo[k] - c > 0.0 {
+                lo[k] - c
+            } else if c - hi[k] > 0.0 {
+                c - hi[k]
+            } else {
+                0.0
+            };
+            sum += d * d;
+        }
+        sum
+    }
+
     /// Samples one patch and polishes its best discrete local minima.
     fn search_patch(
         &self,
@@ -305,7 +337,8 @@ impl NurbsSurface {
         best: &mut Best,
     ) {
         self.sample_grid(test, rect, samples, grid);
-        self.polish_grid_minima(test, rect, samples, grid, best);
+        let evaluate = |u, v| self.derivatives_unchecked(u, v, 2);
+        Self::polish_grid_minima(test, rect, samples, grid, evaluate, best);
     }
 
     /// The squared distances from `test` of the `nu × nv` grid of points of `rect` (row-major
@@ -351,11 +384,11 @@ impl NurbsSurface {
     /// Polishes the best [`STARTS_PER_PATCH`] discrete local minima of the sampled `grid` of
     /// `rect`.
     fn polish_grid_minima(
-        &self,
         test: Point3,
         rect: Rect,
         [nu, nv]: [usize; 2],
         grid: &[f64],
+        evaluate: impl Fn(f64, f64) -> SurfaceDerivatives,
         best: &mut Best,
     ) {
         let param = grid_parameter;
@@ -393,16 +426,22 @@ impl NurbsSurface {
         starts.sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(_, i, j) in starts.iter().take(STARTS_PER_PATCH) {
             let (u, v) = (param(rect.u, i, nu), param(rect.v, j, nv));
-            self.polish_2d(test, u, v, rect, best);
+            Self::polish_2d(test, [u, v], rect, &evaluate, best);
         }
     }
 
     /// Newton iteration on `½|S(u, v) − P|²` inside `rect`, with an active set and a line
     /// search; offers the result to `best`.
-    fn polish_2d(&self, test: Point3, mut u: f64, mut v: f64, rect: Rect, best: &mut Best) {
+    fn polish_2d(
+        test: Point3,
+        [mut u, mut v]: [f64; 2],
+        rect: Rect,
+        evaluate: impl Fn(f64, f64) -> SurfaceDerivatives,
+        best: &mut Best,
+    ) {
         let tol_u = 4.0 * f64::EPSILON * (rect.u[0].abs().max(rect.u[1].abs()) + 1.0);
         let tol_v = 4.0 * f64::EPSILON * (rect.v[0].abs().max(rect.v[1].abs()) + 1.0);
-        let mut d = self.derivatives_unchecked(u, v, 2);
+        let mut d = evaluate(u, v);
         let mut r = d.point - test;
         let mut f = r.length_squared();
         for _ in 0..MAX_ITERATIONS {
@@ -432,7 +471,7 @@ impl NurbsSurface {
                 let nv = (v + alpha * sv).clamp(rect.v[0], rect.v[1]);
                 // The derivatives at once (the first step is nearly always taken, and its
                 // derivatives are the next iteration's).
-                let nd = self.derivatives_unchecked(nu, nv, 2);
+                let nd = evaluate(nu, nv);
                 let nf = nd.point.distance_squared(test);
                 if nf <= f + rounding_noise(nd.point, test, f) {
                     accepted = Some((nu, nv, nf, nd));
@@ -604,35 +643,6 @@ fn step_2d(g: [f64; 2], [huu, huv, hvv]: [f64; 3], [e, f, gg]: [f64; 3]) -> (f64
     solve(huu, huv, hvv)
         .or_else(|| solve(e, f, gg))
         .unwrap_or_else(|| (step_1d(g[0], huu, e), step_1d(g[1], hvv, gg)))
-}
-
-/// The squared distance from `p` to the axis-aligned box of `points` (finite, as a valid
-/// surface's are: plain comparisons, which compile to single min/max instructions, suffice).
-fn box_distance_squared(mut points: impl Iterator<Item = Point3>, p: Point3) -> f64 {
-    let Some(first) = points.next() else {
-        return 0.0;
-    };
-    let (mut lo, mut hi) = (first.to_array(), first.to_array());
-    for q in points {
-        for (k, c) in q.to_array().into_iter().enumerate() {
-            lo[k] = if c < lo[k] { c } else { lo[k] };
-            hi[k] = if c > hi[k] { c } else { hi[k] };
-        }
-    }
-    let mut sum = 0.0;
-    for (k, c) in p.to_array().into_iter().enumerate() {
-        let below = lo[k] - c;
-        let above = c - hi[k];
-        let d = if below > 0.0 {
-            below
-        } else if above > 0.0 {
-            above
-        } else {
-            0.0
-        };
-        sum += d * d;
-    }
-    sum
 }
 
 #[cfg(test)]

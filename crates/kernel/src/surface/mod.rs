@@ -475,62 +475,7 @@ impl NurbsSurface {
                 a[k][l] = acc;
             }
         }
-        // Rational derivatives from the homogeneous ones (The NURBS Book, A4.4).
-        const BINOMIAL: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [1.0, 2.0, 1.0]];
-        let mut s = [[[0.0f64; 3]; 3]; 3];
-        let w0 = a[0][0][3];
-        for k in 0..=order {
-            for l in 0..=(order - k) {
-                let mut v = [a[k][l][0], a[k][l][1], a[k][l][2]];
-                for j in 1..=l {
-                    let f = BINOMIAL[l][j] * a[0][j][3];
-                    for c in 0..3 {
-                        v[c] -= f * s[k][l - j][c];
-                    }
-                }
-                for i in 1..=k {
-                    let f = BINOMIAL[k][i] * a[i][0][3];
-                    for c in 0..3 {
-                        v[c] -= f * s[k - i][l][c];
-                    }
-                    let mut v2 = [0.0f64; 3];
-                    for j in 1..=l {
-                        let g = BINOMIAL[l][j] * a[i][j][3];
-                        for c in 0..3 {
-                            v2[c] += g * s[k - i][l - j][c];
-                        }
-                    }
-                    for c in 0..3 {
-                        v[c] -= BINOMIAL[k][i] * v2[c];
-                    }
-                }
-                for c in 0..3 {
-                    s[k][l][c] = v[c] / w0;
-                }
-            }
-        }
-        let vec = |x: [f64; 3]| Vector3::new(x[0], x[1], x[2]);
-        SurfaceDerivatives {
-            point: Point3::new(s[0][0][0], s[0][0][1], s[0][0][2]),
-            du: vec(s[1][0]),
-            dv: vec(s[0][1]),
-            duu: vec(s[2][0]),
-            duv: vec(s[1][1]),
-            dvv: vec(s[0][2]),
-        }
-    }
-
-    /// The Euclidean control points of the `(p + 1) × (q + 1)` block that defines the span
-    /// starting at knot indices `(su, sv)` (Rhino-form span indices).
-    pub(crate) fn span_points(&self, su: usize, sv: usize) -> impl Iterator<Item = Point3> + '_ {
-        let i0 = su + 1 - self.degree_u;
-        let j0 = sv + 1 - self.degree_v;
-        (i0..=i0 + self.degree_u).flat_map(move |i| {
-            let row = i * self.count_v;
-            self.points[row + j0..=row + j0 + self.degree_v]
-                .iter()
-                .copied()
-        })
+        rational_derivatives(&a, order)
     }
 }
 
@@ -674,6 +619,53 @@ fn validate_direction(name: &str, degree: usize, count: usize, knots: &[f64]) ->
         });
     }
     Ok(())
+}
+
+/// The point and derivatives up to `order` (at most 2) of a rational surface from the
+/// homogeneous ones, `a[k][l] = ∂^(k+l) Sw / ∂u^k ∂v^l` (The NURBS Book, A4.4).
+pub(crate) fn rational_derivatives(a: &[[[f64; 4]; 3]; 3], order: usize) -> SurfaceDerivatives {
+    const BINOMIAL: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [1.0, 2.0, 1.0]];
+    let mut s = [[[0.0f64; 3]; 3]; 3];
+    let w0 = a[0][0][3];
+    for k in 0..=order {
+        for l in 0..=(order - k) {
+            let mut v = [a[k][l][0], a[k][l][1], a[k][l][2]];
+            for j in 1..=l {
+                let f = BINOMIAL[l][j] * a[0][j][3];
+                for c in 0..3 {
+                    v[c] -= f * s[k][l - j][c];
+                }
+            }
+            for i in 1..=k {
+                let f = BINOMIAL[k][i] * a[i][0][3];
+                for c in 0..3 {
+                    v[c] -= f * s[k - i][l][c];
+                }
+                let mut v2 = [0.0f64; 3];
+                for j in 1..=l {
+                    let g = BINOMIAL[l][j] * a[i][j][3];
+                    for c in 0..3 {
+                        v2[c] += g * s[k - i][l - j][c];
+                    }
+                }
+                for c in 0..3 {
+                    v[c] -= BINOMIAL[k][i] * v2[c];
+                }
+            }
+            for c in 0..3 {
+                s[k][l][c] = v[c] / w0;
+            }
+        }
+    }
+    let vec = |x: [f64; 3]| Vector3::new(x[0], x[1], x[2]);
+    SurfaceDerivatives {
+        point: Point3::new(s[0][0][0], s[0][0][1], s[0][0][2]),
+        du: vec(s[1][0]),
+        dv: vec(s[0][1]),
+        duu: vec(s[2][0]),
+        duv: vec(s[1][1]),
+        dvv: vec(s[0][2]),
+    }
 }
 
 #[cfg(test)]
