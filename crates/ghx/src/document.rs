@@ -76,7 +76,8 @@ pub struct GhParam {
     pub persistent: Option<GhTree>,
     /// The input modifiers set on it.
     pub modifiers: Vec<GhModifier>,
-    /// An input expression (`InternalExpression`), not supported.
+    /// An input expression (`InternalExpression`): the importer puts an Expression node in
+    /// front of the input.
     pub expression: Option<String>,
     /// Items that reference Rhino document geometry (`RefID`, `ReferenceData`) or hold
     /// internalised openNURBS geometry (`ON_Data`): their kinds.

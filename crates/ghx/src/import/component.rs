@@ -3,6 +3,9 @@
 
 use super::*;
 
+/// The Expression node, which also carries the expressions of inputs.
+const EXPRESSION_NODE: &str = "maths.expression";
+
 impl Mapper<'_> {
     /// Maps a component or floating parameter onto a node of `node_type`.
     pub(super) fn component(
@@ -177,6 +180,9 @@ impl Mapper<'_> {
                     port: port.clone(),
                 },
             );
+            if self.input_expression(&mut node, &r, p, &port, data_type, prefix) {
+                continue;
+            }
             self.input_data(&mut node, &r, p, &port, data_type);
             let required = resolved
                 .get(k)
@@ -191,7 +197,7 @@ impl Mapper<'_> {
                 node.values.push((port.clone(), Literal("{}".to_owned())));
             }
         }
-        if node_type.id == "maths.expression"
+        if node_type.id == EXPRESSION_NODE
             && let Some(formula) = o.container.str("Expression")
         {
             node.settings
@@ -266,6 +272,109 @@ impl Mapper<'_> {
         Some(id)
     }
 
+    /// An input with an expression (Grasshopper applies it to every item the input collects,
+    /// as `x`): an Expression node takes the input's wires and typed-in data as its `x`, and
+    /// its result feeds the input, which keeps its modifiers (they apply to the results,
+    /// which keep the paths). Returns false, leaving the input to [`Self::input_data`], when
+    /// the input has no expression or locus cannot read the formula (then with a warning).
+    fn input_expression(
+        &mut self,
+        node: &mut GraphNode,
+        r: &ObjectRef,
+        p: &GhParam,
+        port: &str,
+        data_type: DataType,
+        prefix: &str,
+    ) -> bool {
+        let Some(formula) = p.expression.as_deref() else {
+            return false;
+        };
+        let id = node.id.clone();
+        let unreadable = |why: String| {
+            format!("{r}: the expression \"{formula}\" on input {port} is not applied: {why}")
+        };
+        let Some(expression) = self.registry.get(EXPRESSION_NODE) else {
+            let message = unreadable("the library has no Expression node".to_owned());
+            self.diag(
+                Level::Warning,
+                "unsupported-input-expression",
+                message,
+                Some(r.clone()),
+                Some(id),
+                Some(port.to_owned()),
+            );
+            return false;
+        };
+        let names = vec!["x".to_owned()];
+        let settings = [(
+            "expression".to_owned(),
+            locus_runtime::Value::Text(formula.to_owned()),
+        )];
+        let resolved = expression.resolve_inputs(Some(&names));
+        if let Some(prepare) = &expression.prepare
+            && let Err(e) = prepare(&locus_runtime::NodeConfig {
+                settings: &settings,
+                inputs: &resolved,
+            })
+        {
+            let message = unreadable(format!("it does not read in locus ({e})"));
+            self.diag(
+                Level::Warning,
+                "unsupported-input-expression",
+                message,
+                Some(r.clone()),
+                Some(id),
+                Some(port.to_owned()),
+            );
+            return false;
+        }
+        let expression_id = self.unique_id(prefix, &format!("{}_{}_expression", id.0, slug(port)));
+        let mut inner = GraphNode {
+            id: expression_id.clone(),
+            node_type: EXPRESSION_NODE.to_owned(),
+            disabled: node.disabled,
+            input_names: Some(names),
+            ..GraphNode::default()
+        };
+        inner
+            .settings
+            .push(("expression".to_owned(), Literal(literal::text(formula))));
+        // The wires and typed-in data, read as for the input itself; then the input's own
+        // modifiers go back to the input.
+        let stripped = GhParam {
+            expression: None,
+            ..p.clone()
+        };
+        self.input_data(&mut inner, r, &stripped, "x", data_type);
+        node.modifiers.extend(
+            inner
+                .modifiers
+                .drain(..)
+                .map(|(_, mods)| (port.to_owned(), mods)),
+        );
+        self.graph.wires.push(Wire {
+            from: PortRef {
+                node: expression_id.clone(),
+                port: "R".to_owned(),
+            },
+            to: PortRef {
+                node: id.clone(),
+                port: port.to_owned(),
+            },
+        });
+        self.notes.push((
+            expression_id.clone(),
+            format!(
+                "the expression \"{formula}\" on input {port} of \"{}\"",
+                id.0
+            ),
+        ));
+        self.node_pos
+            .insert(expression_id.clone(), self.graph.nodes.len());
+        self.graph.nodes.push(inner);
+        true
+    }
+
     /// Wires, persistent data, modifiers and foreign data of one input.
     fn input_data(
         &mut self,
@@ -311,16 +420,6 @@ impl Mapper<'_> {
         let mods = self.modifiers(r, &id, p, port, data_type, true);
         if !mods.is_empty() {
             node.modifiers.push((port.to_owned(), mods));
-        }
-        if let Some(e) = &p.expression {
-            self.diag(
-                Level::Warning,
-                "unsupported-input-expression",
-                format!("{r}: the expression \"{e}\" on input {port} is not applied"),
-                Some(r.clone()),
-                Some(id.clone()),
-                Some(port.to_owned()),
-            );
         }
         for kind in &p.foreign_data {
             if kind == "ON_Data" {
