@@ -148,17 +148,19 @@ pub fn bounding_box() -> NodeType {
                 .list(),
         )
         .input(
-            Port::new("Union", "U", DataType::Boolean)
-                .doc(
-                    "Whether to give one box around the whole list (true) or one box per \
-                     object (false). Default false.",
-                )
-                .default_value(false),
-        )
-        .input(
             Port::new("Plane", "P", DataType::Plane)
                 .doc("The plane the boxes are aligned with. Default World XY.")
                 .default_value(Plane::WORLD_XY),
+        )
+        .input(
+            Port::new("Union", "U", DataType::Boolean)
+                .doc(
+                    "Whether to give one box around the whole list (true) or one box per \
+                     object (false). Default false. Grasshopper has this as the \"Union Box\" \
+                     menu option, not a port, so it is the third input here, after \
+                     Grasshopper's two (a file's ports map by index).",
+                )
+                .default_value(false),
         )
         .output(
             Port::new("Box", "B", DataType::Box)
@@ -174,8 +176,8 @@ pub fn bounding_box() -> NodeType {
                 .list(),
         )
         .solve(|s| {
-            let union = *s.item::<bool>(1)?;
-            let plane = box_plane(s, 2, "P")?;
+            let plane = box_plane(s, 1, "P")?;
+            let union = *s.item::<bool>(2)?;
             let to_plane = Transform::plane_to_plane(&plane, &Plane::WORLD_XY);
             let xform = (plane != Plane::WORLD_XY).then_some(&to_plane);
             let mut local: Vec<Option<BoundingBox>> = Vec::new();
@@ -245,8 +247,8 @@ mod tests {
         tree.insert(TreePath::zero(), branch);
         NodeCall::new(&bounding_box())
             .input(tree)
-            .input(DataTree::from_item(union))
             .input(DataTree::from_item(plane))
+            .input(DataTree::from_item(union))
             .run()
     }
 
@@ -360,12 +362,14 @@ mod tests {
         // United, the good items still give a box.
         let r = NodeCall::new(&bounding_box())
             .input(tree)
+            .input(DataTree::from_item(Plane::WORLD_XY))
             .input(DataTree::from_item(true))
             .run();
         assert_eq!(boxes(&r, 0).len(), 1);
         // An empty list gives no box.
         let r = NodeCall::new(&bounding_box())
             .input(DataTree::from_list(Vec::<Point3>::new()))
+            .input(DataTree::from_item(Plane::WORLD_XY))
             .input(DataTree::from_item(true))
             .run();
         assert_eq!(r.outputs[0].item_count(), 0);
