@@ -17,72 +17,11 @@
 
 use std::hint::black_box;
 
-use locus_kernel::{NurbsCurve, NurbsSurface, Point3, Sphere};
+use locus_kernel::{Point3, Sphere};
 
-/// A fixed linear congruential sequence in `[0, 1)`.
-fn uniform(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-/// `count` points uniformly in the box `lo` to `hi`.
-fn queries(count: usize, lo: Point3, hi: Point3, seed: u64) -> Vec<Point3> {
-    let mut r = uniform(seed);
-    (0..count)
-        .map(|_| {
-            Point3::new(
-                lo.x + (hi.x - lo.x) * r(),
-                lo.y + (hi.y - lo.y) * r(),
-                lo.z + (hi.z - lo.z) * r(),
-            )
-        })
-        .collect()
-}
-
-/// The benchmark's cubic through 64 control points on a helix (61 spans).
-fn helix(rational: bool) -> NurbsCurve {
-    let points: Vec<Point3> = (0..64)
-        .map(|i| {
-            let a = i as f64 * 0.4;
-            Point3::new(10.0 * a.cos(), 10.0 * a.sin(), 0.5 * i as f64)
-        })
-        .collect();
-    let weights = if rational {
-        (0..64).map(|i| 0.75 + 0.5 * ((i % 3) as f64)).collect()
-    } else {
-        vec![1.0; 64]
-    };
-    let create = NurbsCurve::create(&points, 3, false).expect("valid control points");
-    NurbsCurve::new(3, points, weights, create.knots().to_vec()).expect("a valid curve")
-}
-
-/// The benchmark's rational bicubic surface on an 8 × 8 grid with uneven knots.
-fn bicubic() -> NurbsSurface {
-    let points = (0..8)
-        .map(|i| {
-            (0..8)
-                .map(|j| {
-                    let (x, y) = (i as f64, j as f64);
-                    Point3::new(x, y, (0.7 * x).sin() * (0.5 * y).cos())
-                })
-                .collect()
-        })
-        .collect();
-    let weights = (0..8)
-        .map(|i| {
-            (0..8)
-                .map(|j| 1.0 + 0.25 * ((i + 2 * j) % 3) as f64)
-                .collect()
-        })
-        .collect();
-    let knots = vec![0.0, 0.0, 0.0, 0.1, 0.3, 0.45, 0.7, 1.0, 1.0, 1.0];
-    NurbsSurface::new(3, 3, points, weights, knots.clone(), knots).expect("a valid surface")
-}
+#[path = "../benches/support/query_fixtures.rs"]
+mod query_fixtures;
+use query_fixtures::{bicubic, curve, queries};
 
 fn main() {
     let var = |name: &str| std::env::var(name).unwrap_or_default();
@@ -90,7 +29,7 @@ fn main() {
     let reps: usize = var("REPS").parse().unwrap_or(1);
     match case.as_str() {
         "curve" | "curve_rational" => {
-            let curve = helix(case == "curve_rational");
+            let curve = curve(case == "curve_rational");
             let tests = queries(
                 1_000,
                 Point3::new(-14.0, -14.0, -4.0),
