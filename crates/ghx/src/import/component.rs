@@ -205,28 +205,18 @@ impl Mapper<'_> {
             // A formula the node's own prepare step cannot read (Grasshopper syntax locus does
             // not have, such as `•` or `[d1]`) disables the node, so that the rest of the
             // definition still checks and runs; downstream nodes get no data from it.
-            if let Some(prepare) = &node_type.prepare {
-                let settings = [(
-                    "expression".to_owned(),
-                    locus_runtime::Value::Text(formula.to_owned()),
-                )];
-                let config = locus_runtime::NodeConfig {
-                    settings: &settings,
-                    inputs: &resolved,
-                };
-                if let Err(e) = prepare(&config) {
-                    node.disabled = true;
-                    self.diag(
-                        Level::Warning,
-                        "unsupported-expression",
-                        format!(
-                            "{r}: the formula \"{formula}\" does not read in locus ({e}); the node is disabled"
-                        ),
-                        Some(r.clone()),
-                        None,
-                        None,
-                    );
-                }
+            if let Err(e) = formula_reads(node_type, formula, &resolved) {
+                node.disabled = true;
+                self.diag(
+                    Level::Warning,
+                    "unsupported-expression",
+                    format!(
+                        "{r}: the formula \"{formula}\" does not read in locus ({e}); the node is disabled"
+                    ),
+                    Some(r.clone()),
+                    None,
+                    None,
+                );
             }
         }
         if node_type.id == script::PYTHON {
@@ -290,38 +280,20 @@ impl Mapper<'_> {
             return false;
         };
         let id = node.id.clone();
-        let unreadable = |why: String| {
-            format!("{r}: the expression \"{formula}\" on input {port} is not applied: {why}")
-        };
-        let Some(expression) = self.registry.get(EXPRESSION_NODE) else {
-            let message = unreadable("the library has no Expression node".to_owned());
-            self.diag(
-                Level::Warning,
-                "unsupported-input-expression",
-                message,
-                Some(r.clone()),
-                Some(id),
-                Some(port.to_owned()),
-            );
-            return false;
-        };
         let names = vec!["x".to_owned()];
-        let settings = [(
-            "expression".to_owned(),
-            locus_runtime::Value::Text(formula.to_owned()),
-        )];
-        let resolved = expression.resolve_inputs(Some(&names));
-        if let Some(prepare) = &expression.prepare
-            && let Err(e) = prepare(&locus_runtime::NodeConfig {
-                settings: &settings,
-                inputs: &resolved,
-            })
-        {
-            let message = unreadable(format!("it does not read in locus ({e})"));
+        let readable = match self.registry.get(EXPRESSION_NODE) {
+            None => Err("the library has no Expression node".to_owned()),
+            Some(expression) => {
+                let resolved = expression.resolve_inputs(Some(&names));
+                formula_reads(expression, formula, &resolved)
+                    .map_err(|e| format!("it does not read in locus ({e})"))
+            }
+        };
+        if let Err(why) = readable {
             self.diag(
                 Level::Warning,
                 "unsupported-input-expression",
-                message,
+                format!("{r}: the expression \"{formula}\" on input {port} is not applied: {why}"),
                 Some(r.clone()),
                 Some(id),
                 Some(port.to_owned()),
@@ -517,4 +489,26 @@ impl Mapper<'_> {
         }
         mods
     }
+}
+
+/// Whether the Expression node type `expression` reads `formula` with the variables `inputs`:
+/// its own prepare step, run as the graph check will run it.
+fn formula_reads(
+    expression: &NodeType,
+    formula: &str,
+    inputs: &[locus_runtime::Port],
+) -> Result<(), String> {
+    let Some(prepare) = &expression.prepare else {
+        return Ok(());
+    };
+    let settings = [(
+        "expression".to_owned(),
+        locus_runtime::Value::Text(formula.to_owned()),
+    )];
+    prepare(&locus_runtime::NodeConfig {
+        settings: &settings,
+        inputs,
+    })
+    .map(|_| ())
+    .map_err(|e| e.to_string())
 }
