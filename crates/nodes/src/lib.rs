@@ -79,9 +79,10 @@
 //!   \[Nurbs\], Nurbs Curve PWK \[NurbCrv\], Interpolate \[IntCrv\], Knot Vector \[Knots\].
 //! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,
 //!   Curve Domain \[CrvDom\], End Points \[End\], Length \[Len\], Evaluate Length \[Eval\],
-//!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\].
+//!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\]; Derivatives \[CDiv\]
+//!   ([`curve::derivatives`], one output per derivative).
 //! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
-//!   Shatter.
+//!   Shatter; Dash Pattern \[Dash\] ([`curve::dash`]).
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
 //!
@@ -94,7 +95,7 @@
 //! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].
 //! - The Surface parameter \[Srf\] is in [`params::surface`].
 //! - Boxes ([`surface::box_nodes`], [`surface::bounding_box`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
-//!   \[Box\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct
+//!   \[Box\], Box Rectangle \[BoxRec\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct
 //!   Box \[DeBox\] (Analysis).
 //! - B-reps ([`surface::brep`], [`surface::brep_analysis`]): Deconstruct Brep \[DeBrep\],
 //!   Brep Edges \[Edges\], Area, Volume, Singular Points \[Sing\] (the book's singularity

@@ -57,7 +57,11 @@ fn parameter_port() -> Port {
 
 /// Reads parameter input `input` and warns when it lies outside the curve's domain (the curve
 /// is then evaluated on its extension, as Rhino does).
-fn parameter_on(s: &mut Solve<'_>, input: usize, curve: &Curve) -> Result<f64, NodeError> {
+pub(super) fn parameter_on(
+    s: &mut Solve<'_>,
+    input: usize,
+    curve: &Curve,
+) -> Result<f64, NodeError> {
     let t = finite_parameter(*s.item::<f64>(input)?, "t")?;
     let d = curve.domain();
     let slack = 1e-12 * d.t0.abs().max(d.t1.abs()).max(d.length());

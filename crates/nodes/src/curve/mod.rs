@@ -12,6 +12,8 @@
 //! angle interval. Tangents are unit vectors.
 
 pub mod analysis;
+pub mod dash;
+pub mod derivatives;
 pub mod division;
 pub mod edit;
 pub mod extend;
@@ -40,6 +42,8 @@ pub fn register(registry: &mut NodeRegistry) {
     frames::register(registry);
     extend::register(registry);
     regions::register(registry);
+    derivatives::register(registry);
+    dash::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve

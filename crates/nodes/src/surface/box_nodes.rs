@@ -1,4 +1,5 @@
-//! Surface › Primitive and Analysis: boxes. Box 2Pt, Center Box and Domain Box build them;
+//! Surface › Primitive and Analysis: boxes. Box 2Pt, Center Box, Domain Box and Box Rectangle
+//! build them;
 //! Box Properties and Deconstruct Box take them apart. Bounding Box is in
 //! [`super::bounding_box`].
 //!
@@ -7,8 +8,10 @@
 //! rectangle, a segment or a point). The nodes that build boxes output degenerate boxes as they
 //! are, with a warning; Box Properties reports the degeneracy as a number.
 
-use locus_kernel::{Interval, OrientedBox, Plane, Point3, tolerance};
-use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Solve};
+use locus_kernel::{Curve, Interval, OrientedBox, Plane, Point3, tolerance};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve};
+
+use crate::params::shapes::not_a_rectangle;
 
 use super::brep::surface_node;
 
@@ -18,6 +21,8 @@ pub const BOX_2PT: &str = "surface.box_2pt";
 pub const CENTER_BOX: &str = "surface.center_box";
 /// Id of [`domain_box`].
 pub const DOMAIN_BOX: &str = "surface.domain_box";
+/// Id of [`box_rectangle`].
+pub const BOX_RECTANGLE: &str = "surface.box_rectangle";
 /// Id of [`box_properties`].
 pub const BOX_PROPERTIES: &str = "surface.box_properties";
 /// Id of [`deconstruct_box`].
@@ -34,6 +39,7 @@ pub fn register(registry: &mut NodeRegistry) {
         box_2pt(),
         center_box(),
         domain_box(),
+        box_rectangle(),
         box_properties(),
         deconstruct_box(),
     ] {
@@ -199,6 +205,58 @@ pub fn domain_box() -> NodeType {
         })
 }
 
+/// Box Rectangle \[BoxRec\]: the box standing on a rectangle.
+pub fn box_rectangle() -> NodeType {
+    surface_node(BOX_RECTANGLE, "Box Rectangle", "BoxRec", "Primitive")
+        .gh_guid("d0a56c9e-2483-45e7-ab98-a450b97f1bc0")
+        .description(
+            "Creates the box whose base is a rectangle, H units high along the rectangle's \
+             normal (the side that sees its corners run anticlockwise); a negative height \
+             puts the box below the rectangle. The box's plane has its origin at the \
+             rectangle's first corner and its x axis along the first side (locus's \
+             rectangles are polylines, which do not keep the plane they were made on; \
+             Grasshopper's keep it, so Deconstruct Box may give another plane and domains for \
+             the same box). A height of zero gives a flat box (a warning); a curve that is \
+             not a rectangle is an error.",
+        )
+        .input(
+            Port::new("Rectangle", "R", DataType::Curve)
+                .doc("The base: a closed planar polyline of four right-angled sides."),
+        )
+        .input(
+            Port::new("Height", "H", DataType::Number)
+                .doc("The height along the rectangle's normal, in model units. Default 1.")
+                .default_value(1.0),
+        )
+        .output(Port::new("Box", "B", DataType::Box).doc("The box on the rectangle."))
+        .solve(|s| {
+            let rectangle = s.item::<Shared<Curve>>(0)?;
+            if let Some(why) = not_a_rectangle(rectangle) {
+                return Err(format!("R is not a rectangle: {why}").into());
+            }
+            let Curve::Polyline { polyline, .. } = rectangle.as_ref() else {
+                return Err("R is not a rectangle".into());
+            };
+            let height = *s.item::<f64>(1)?;
+            if !height.is_finite() {
+                return Err(format!("height H is {height}, not a finite number").into());
+            }
+            let p = polyline.points();
+            let (a, b) = (p[1] - p[0], p[3] - p[0]);
+            let plane = Plane::from_frame(p[0], a, b)?;
+            let z = Interval::new(height.min(0.0), height.max(0.0));
+            finish_box(
+                s,
+                OrientedBox::new(
+                    plane,
+                    Interval::new(0.0, a.length()),
+                    Interval::new(0.0, b.length()),
+                    z,
+                ),
+            )
+        })
+}
+
 /// Box Properties \[BoxProp\]: centre, diagonal, area, volume and degeneracy of a box.
 pub fn box_properties() -> NodeType {
     surface_node(BOX_PROPERTIES, "Box Properties", "BoxProp", "Analysis")
@@ -355,6 +413,76 @@ mod tests {
             .input(DataTree::from_item(bad))
             .run();
         assert_error(&r, "orthonormal");
+    }
+
+    fn rectangle(points: &[Point3]) -> DataTree {
+        let polyline = locus_kernel::Polyline::new(points.to_vec()).unwrap();
+        DataTree::from_item(Shared::new(Curve::from(polyline)))
+    }
+
+    #[test]
+    fn box_rectangle_stands_on_its_rectangle() {
+        let plane = tilted();
+        let corners: Vec<Point3> = [(0.0, 0.0), (3.0, 0.0), (3.0, 2.0), (0.0, 2.0), (0.0, 0.0)]
+            .iter()
+            .map(|&(x, y)| plane.point_at(x, y, 0.0))
+            .collect();
+        let r = NodeCall::new(&box_rectangle())
+            .input(rectangle(&corners))
+            .input(DataTree::from_item(4.0))
+            .run();
+        assert_clean(&r);
+        let b = only::<OrientedBox>(&r, 0);
+        assert!((b.volume() - 24.0).abs() < 1e-12);
+        for (x, y, z) in [(0.0, 0.0, 0.0), (3.0, 2.0, 0.0), (3.0, 2.0, 4.0)] {
+            let want = plane.point_at(x, y, z);
+            assert!(b.corners().iter().any(|&p| close(p, want)), "{want:?}");
+        }
+        // A negative height hangs the box below; zero gives a flat box with a warning.
+        let r = NodeCall::new(&box_rectangle())
+            .input(rectangle(&corners))
+            .input(DataTree::from_item(-1.0))
+            .run();
+        let b = only::<OrientedBox>(&r, 0);
+        assert_eq!(b.z, Interval::new(-1.0, 0.0));
+        assert!(
+            b.corners()
+                .iter()
+                .any(|&p| close(p, plane.point_at(3.0, 2.0, -1.0)))
+        );
+        let r = NodeCall::new(&box_rectangle())
+            .input(rectangle(&corners))
+            .input(DataTree::from_item(0.0))
+            .run();
+        assert_eq!(messages(&r, Level::Warning).len(), 1);
+    }
+
+    #[test]
+    fn box_rectangle_bad_input() {
+        let skew = [
+            Point3::ORIGIN,
+            Point3::new(2.0, 0.0, 0.0),
+            Point3::new(3.0, 1.0, 0.0),
+            Point3::new(1.0, 1.0, 0.0),
+            Point3::ORIGIN,
+        ];
+        let r = NodeCall::new(&box_rectangle())
+            .input(rectangle(&skew))
+            .run();
+        assert_error(&r, "not a rectangle");
+        assert!(is_null(&r, 0));
+        let square = [
+            Point3::ORIGIN,
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(1.0, 1.0, 0.0),
+            Point3::new(0.0, 1.0, 0.0),
+            Point3::ORIGIN,
+        ];
+        let r = NodeCall::new(&box_rectangle())
+            .input(rectangle(&square))
+            .input(DataTree::from_item(f64::INFINITY))
+            .run();
+        assert_error(&r, "height H");
     }
 
     #[test]
