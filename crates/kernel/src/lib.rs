@@ -70,7 +70,9 @@ pub use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
 pub use crate::curve::offset::{CurveOffset, MAX_OFFSET_SAMPLES, OffsetCorners};
 pub use crate::curve::polyline::Polyline;
 pub use crate::error::{Error, Result};
-pub use crate::geometry::best_candidate::{BEST_CANDIDATES, best_candidate_samples};
+pub use crate::geometry::best_candidate::{
+    BEST_CANDIDATES, best_candidate_points, best_candidate_samples,
+};
 pub use crate::geometry::bounding_box::BoundingBox;
 pub use crate::geometry::interval::{Interval, UvInterval};
 pub use crate::geometry::oriented_box::OrientedBox;
@@ -98,8 +100,8 @@ pub use crate::mesh::parameters::{
     MAX_MESH_SAMPLES_PER_DIRECTION, MAX_MESH_VERTICES, MeshingParameters, SURFACE_CHORD_SHARE,
 };
 pub use crate::mesh::{
-    Color, GRID_COINCIDENT_DISTANCE, INDEX_MIN_FACES, Mesh, MeshEdge, MeshFace, MeshPoint,
-    PlanarTriangulation, WELD_DISTANCE,
+    Color, FaceTriangle, GRID_COINCIDENT_DISTANCE, GeometrySampler, INDEX_MIN_FACES, Mesh,
+    MeshEdge, MeshFace, MeshPoint, PlanarTriangulation, WELD_DISTANCE, spread_points,
 };
 pub use crate::surface::NurbsSurface;
 pub use crate::surface::closest_point::SurfaceClosestPoint;

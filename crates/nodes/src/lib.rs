@@ -62,6 +62,8 @@
 //!   Product \[XProd\], Angle.
 //! - Plane ([`vector::plane`]): Construct Plane \[Pl\], Plane 3Pt, Plane Normal \[Pl\], XY/YZ/XZ
 //!   Plane, Deconstruct Plane \[DePlane\], Plane Coefficients \[PlEq\], Plane Closest Point.
+//! - Grid, random points ([`vector::populate`]): Populate 2D \[Pop2D\], Populate 3D \[Pop3D\],
+//!   Populate Geometry \[PopGeo\].
 //!
 //! **Transform** ([`transform`])
 //! - Euclidean ([`transform::euclidean`]): Move, Rotate, Rotate Axis \[RotAx\], Rotate 3D

@@ -13,6 +13,7 @@ fn box_and_brep_ids_are_registered() {
         (box_nodes::BOX_2PT, "Surface", "Primitive"),
         (box_nodes::CENTER_BOX, "Surface", "Primitive"),
         (box_nodes::DOMAIN_BOX, "Surface", "Primitive"),
+        (box_nodes::BOX_RECTANGLE, "Surface", "Primitive"),
         (bounding_box::BOUNDING_BOX, "Surface", "Primitive"),
         (box_nodes::BOX_PROPERTIES, "Surface", "Analysis"),
         (box_nodes::DECONSTRUCT_BOX, "Surface", "Analysis"),
@@ -41,6 +42,7 @@ fn box_and_brep_ids_are_registered() {
     for (id, nickname) in [
         (box_nodes::BOX_2PT, "Box"),
         (bounding_box::BOUNDING_BOX, "BBox"),
+        (box_nodes::BOX_RECTANGLE, "BoxRec"),
         (box_nodes::BOX_PROPERTIES, "BoxProp"),
         (box_nodes::DECONSTRUCT_BOX, "DeBox"),
         (brep::DECONSTRUCT_BREP, "DeBrep"),

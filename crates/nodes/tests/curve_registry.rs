@@ -2,8 +2,8 @@
 //! category holds no node that is not listed here.
 
 use locus_nodes::curve::{
-    analysis, division, edit, extend, frames, primitive, primitive_more, primitive_rect, regions,
-    spline, util,
+    analysis, dash, derivatives, division, edit, extend, frames, primitive, primitive_more,
+    primitive_rect, regions, spline, util,
 };
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
@@ -32,10 +32,12 @@ fn curve_ids_are_registered() {
         analysis::EVALUATE_LENGTH,
         analysis::CURVE_CLOSEST_POINT,
         analysis::CURVE_CONTINUITY,
+        derivatives::DERIVATIVES,
         division::DIVIDE_CURVE,
         division::DIVIDE_LENGTH,
         division::SHATTER,
         division::DIVIDE_DISTANCE,
+        dash::DASH_PATTERN,
         util::FLIP_CURVE,
         util::SPLIT_CURVE,
         util::FILLET,

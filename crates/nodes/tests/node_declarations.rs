@@ -174,6 +174,7 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
         point_sets::CULL_DUPLICATES,
         populate::POPULATE_2D,
         populate::POPULATE_3D,
+        populate::POPULATE_GEOMETRY,
     ];
     for id in ids {
         assert!(registry.get(id).is_some(), "{id} is not registered");

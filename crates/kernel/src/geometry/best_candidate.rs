@@ -8,13 +8,17 @@
 //! found in a uniform grid of cells of about the final mean spacing, searched ring by ring
 //! outwards, so that sampling `n` points costs about `n · candidates` grid look-ups.
 
-use crate::Point3;
+use crate::{BoundingBox, Point3};
 
 /// How many random candidates compete for each new point: 10.
 pub const BEST_CANDIDATES: usize = 10;
 
 /// The most cells of the search grid along one axis: 4096.
 const MAX_CELLS_PER_AXIS: usize = 4096;
+
+/// The most cells of the search grid per point expected in it: 8 (so that the grid of a
+/// surface spread through a box stays in proportion to the points, not to the box's volume).
+const MAX_CELLS_PER_POINT: usize = 8;
 
 /// Below this many points held, a query checks them one by one: 64.
 const BRUTE_FORCE_POINTS: usize = 64;
@@ -32,15 +36,21 @@ struct Grid {
 }
 
 impl Grid {
-    fn new(extents: [f64; 3], expected: usize) -> Self {
-        let axes: Vec<f64> = extents.iter().copied().filter(|&e| e > 0.0).collect();
-        let measure: f64 = axes.iter().product();
-        let mut cell = (measure / expected.max(1) as f64).powf(1.0 / axes.len().max(1) as f64);
-        let longest = axes.iter().copied().fold(0.0, f64::max);
+    /// A grid over `extents` with cubic cells of side `cell` (made larger where more than
+    /// [`MAX_CELLS_PER_AXIS`] per axis or [`MAX_CELLS_PER_POINT`] per expected point would be
+    /// needed).
+    fn with_cell(extents: [f64; 3], mut cell: f64, expected: usize) -> Self {
+        let longest = extents.iter().copied().fold(0.0, f64::max);
         if !(cell.is_finite() && cell > 0.0) {
             cell = longest.max(1.0);
         }
         cell = cell.max(longest / MAX_CELLS_PER_AXIS as f64);
+        let cells =
+            |cell: f64| -> f64 { extents.iter().map(|e| (e / cell).ceil().max(1.0)).product() };
+        let budget = (MAX_CELLS_PER_POINT * expected.max(1)) as f64;
+        while cells(cell) > budget {
+            cell *= 1.25;
+        }
         let dims = extents.map(|e| ((e / cell).ceil() as usize).clamp(1, MAX_CELLS_PER_AXIS));
         Self {
             cell,
@@ -50,6 +60,14 @@ impl Grid {
             all: Vec::new(),
             outside: Vec::new(),
         }
+    }
+
+    /// A grid over `extents` with cells of about the mean spacing of `expected` points.
+    fn new(extents: [f64; 3], expected: usize) -> Self {
+        let axes: Vec<f64> = extents.iter().copied().filter(|&e| e > 0.0).collect();
+        let measure: f64 = axes.iter().product();
+        let cell = (measure / expected.max(1) as f64).powf(1.0 / axes.len().max(1) as f64);
+        Self::with_cell(extents, cell, expected)
     }
 
     /// The cell coordinate of `x` along `axis`: cells are closed, so a point on the far side of
@@ -172,6 +190,48 @@ pub fn best_candidate_samples(
             }
         }
         grid.insert(best.1);
+        out.push(best.1);
+    }
+    out
+}
+
+/// `count` points drawn by `candidate`, each the best of [`BEST_CANDIDATES`] candidates
+/// against the points before it and `existing`: the generalisation of
+/// [`best_candidate_samples`] to any region (a curve, a surface, a mesh) that can draw random
+/// points of itself. `bounds` should hold the region (points outside it are found too, only
+/// more slowly); `spacing` is the expected distance between neighbouring points, the size of
+/// the search grid's cells. A candidate function that gives `None` (a draw that failed) stops
+/// the sampling early, so fewer points come back.
+pub fn best_candidate_points(
+    bounds: BoundingBox,
+    spacing: f64,
+    count: usize,
+    existing: &[Point3],
+    mut candidate: impl FnMut() -> Option<Point3>,
+) -> Vec<Point3> {
+    if !(bounds.is_finite() && bounds.is_valid()) {
+        return Vec::new();
+    }
+    let origin = bounds.min;
+    let d = bounds.diagonal();
+    let mut grid = Grid::with_cell([d.x, d.y, d.z], spacing, count + existing.len());
+    let local = |p: Point3| Point3::from_vector(p - origin);
+    for p in existing.iter().filter(|p| p.is_finite()) {
+        grid.insert(local(*p));
+    }
+    let mut out = Vec::with_capacity(count);
+    'points: for _ in 0..count {
+        let mut best = (f64::NEG_INFINITY, Point3::ORIGIN);
+        for _ in 0..BEST_CANDIDATES {
+            let Some(c) = candidate().filter(|c| c.is_finite()) else {
+                break 'points;
+            };
+            let d = grid.nearest_squared(local(c));
+            if d > best.0 {
+                best = (d, c);
+            }
+        }
+        grid.insert(local(best.1));
         out.push(best.1);
     }
     out

@@ -12,6 +12,7 @@ pub(crate) mod index;
 mod measure;
 pub(crate) mod parameters;
 mod polyline;
+pub(crate) mod populate;
 mod sampling;
 mod tessellate;
 mod triangulation;
@@ -23,6 +24,8 @@ pub use closest::MeshPoint;
 pub use edges::MeshEdge;
 pub use grid::GRID_COINCIDENT_DISTANCE;
 pub use index::INDEX_MIN_FACES;
+pub use populate::{GeometrySampler, spread_points};
+pub use tessellate::FaceTriangle;
 pub use triangulation::PlanarTriangulation;
 pub use weld::WELD_DISTANCE;
 

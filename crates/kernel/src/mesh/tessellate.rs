@@ -41,12 +41,27 @@ impl HasPosition for UvVertex {
     }
 }
 
+/// A triangle of a B-rep's mesh in the parameter plane of the face it lies on: the surface
+/// of face `face` at `uv[k]` is the triangle's `k`-th corner (so the surface at a convex
+/// combination of the `uv` is a point of the face, inside its trims).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FaceTriangle {
+    /// The index of the B-rep face.
+    pub face: usize,
+    /// The face-surface parameters of the three corners.
+    pub uv: [[f64; 2]; 3],
+}
+
 /// The mesh being built: vertices and the sums of the surface normals seen at each.
 #[derive(Debug, Default)]
 struct Builder {
     vertices: Vec<Point3>,
     normal_sums: Vec<Vector3>,
     faces: Vec<MeshFace>,
+    /// Whether to record `face_triangles`.
+    record: bool,
+    /// Per mesh face (all triangles), its face and parameters, when `record` is set.
+    face_triangles: Vec<FaceTriangle>,
 }
 
 impl Builder {
@@ -171,38 +186,20 @@ impl Mesh {
     /// [`MAX_MESH_VERTICES`](crate::mesh::parameters::MAX_MESH_VERTICES) vertices, or for trim
     /// loops that cross each other in a face's parameter plane.
     pub fn from_brep(brep: &Brep, parameters: &MeshingParameters) -> Result<Self> {
-        parameters.validate()?;
-        let mut b = Builder::default();
-        for v in brep.vertices() {
-            b.vertex(v.point)?;
-        }
-        // Each edge divided once; the mesh vertices along it, first vertex to last.
-        let mut edge_divisions: Vec<(Vec<f64>, Vec<u32>)> = Vec::with_capacity(brep.edges().len());
-        // An edge chord is a side of triangles whose other direction adds its own share of the
-        // deviation, so edges get the same share as each direction of a surface.
-        let edge_limits = MeshingParameters {
-            max_chord_deviation: parameters.max_chord_deviation * SURFACE_CHORD_SHARE,
-            ..*parameters
-        };
-        for edge in brep.edges() {
-            let ts = curve_parameters(&edge.curve, &edge_limits)?;
-            let mut ids = Vec::with_capacity(ts.len());
-            for (k, &t) in ts.iter().enumerate() {
-                let id = if k == 0 {
-                    edge.vertices[0] as u32
-                } else if k + 1 == ts.len() {
-                    edge.vertices[1] as u32
-                } else {
-                    b.vertex(edge.curve.point_at(t))?
-                };
-                ids.push(id);
-            }
-            edge_divisions.push((ts, ids));
-        }
-        for f in 0..brep.faces().len() {
-            mesh_face(brep, f, &edge_divisions, parameters, &mut b)?;
-        }
-        b.finish()
+        mesh_brep(brep, parameters, false).map(|(mesh, _)| mesh)
+    }
+
+    /// The mesh of a B-rep as [`Mesh::from_brep`] makes it, with the face and the parameters
+    /// of every triangle (one [`FaceTriangle`] per mesh face, in order), to map points of the
+    /// mesh back onto the B-rep exactly.
+    ///
+    /// # Errors
+    /// As [`Mesh::from_brep`].
+    pub fn from_brep_with_face_triangles(
+        brep: &Brep,
+        parameters: &MeshingParameters,
+    ) -> Result<(Self, Vec<FaceTriangle>)> {
+        mesh_brep(brep, parameters, true)
     }
 
     /// The mesh of a whole surface (Grasshopper's Mesh Surface, Rhino's
@@ -215,6 +212,52 @@ impl Mesh {
         parameters.validate()?;
         Self::from_brep(&Brep::from_surface(surface.clone())?, parameters)
     }
+}
+
+/// Meshes a B-rep (see [`Mesh::from_brep`]), recording each triangle's face and parameters
+/// when `record` is set.
+fn mesh_brep(
+    brep: &Brep,
+    parameters: &MeshingParameters,
+    record: bool,
+) -> Result<(Mesh, Vec<FaceTriangle>)> {
+    parameters.validate()?;
+    let mut b = Builder {
+        record,
+        ..Builder::default()
+    };
+
+    for v in brep.vertices() {
+        b.vertex(v.point)?;
+    }
+    // Each edge divided once; the mesh vertices along it, first vertex to last.
+    let mut edge_divisions: Vec<(Vec<f64>, Vec<u32>)> = Vec::with_capacity(brep.edges().len());
+    // An edge chord is a side of triangles whose other direction adds its own share of the
+    // deviation, so edges get the same share as each direction of a surface.
+    let edge_limits = MeshingParameters {
+        max_chord_deviation: parameters.max_chord_deviation * SURFACE_CHORD_SHARE,
+        ..*parameters
+    };
+    for edge in brep.edges() {
+        let ts = curve_parameters(&edge.curve, &edge_limits)?;
+        let mut ids = Vec::with_capacity(ts.len());
+        for (k, &t) in ts.iter().enumerate() {
+            let id = if k == 0 {
+                edge.vertices[0] as u32
+            } else if k + 1 == ts.len() {
+                edge.vertices[1] as u32
+            } else {
+                b.vertex(edge.curve.point_at(t))?
+            };
+            ids.push(id);
+        }
+        edge_divisions.push((ts, ids));
+    }
+    for f in 0..brep.faces().len() {
+        mesh_face(brep, f, &edge_divisions, parameters, &mut b)?;
+    }
+    let face_triangles = std::mem::take(&mut b.face_triangles);
+    Ok((b.finish()?, face_triangles))
 }
 
 /// Triangulates face `f` into the builder.
@@ -418,6 +461,13 @@ fn mesh_face(
             if !inside(centroid, &scaled_loops) {
                 continue;
             }
+        }
+        if b.record {
+            let uv = |q: Point2<f64>| [q.x / su + du.t0, q.y / sv + dv.t0];
+            b.face_triangles.push(FaceTriangle {
+                face: f,
+                uv: [uv(a.position), uv(c.position), uv(d.position)],
+            });
         }
         // spade's faces are counter-clockwise in the (u, v) plane, i.e. along Su × Sv.
         b.faces.push(if face.reversed {

@@ -1,4 +1,5 @@
-//! Vector › Grid, random points: Populate 2D (a rectangle) and Populate 3D (a box).
+//! Vector › Grid, random points: Populate 2D (a rectangle), Populate 3D (a box) and Populate
+//! Geometry (curves, surfaces, B-reps and meshes, through [`GeometrySampler`]).
 //!
 //! The points are spread by best-candidate sampling ([`best_candidate_samples`]): each new
 //! point is the one of [`BEST_CANDIDATES`](locus_kernel::BEST_CANDIDATES) random candidates farthest from the points before it
@@ -8,8 +9,11 @@
 //! any number of threads. Grasshopper's own candidate count and draw order are not published;
 //! its points for a seed differ from these, but are spread the same way.
 
-use locus_kernel::{Curve, OrientedBox, Point3, Vector3, best_candidate_samples};
-use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve};
+use locus_kernel::{
+    Brep, Curve, GeometrySampler, MeshingParameters, OrientedBox, Point3, Vector3,
+    best_candidate_samples, spread_points,
+};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve, Value};
 
 use crate::params::shapes::not_a_rectangle;
 use crate::sets::random::DotNetRandom;
@@ -18,6 +22,8 @@ use crate::sets::random::DotNetRandom;
 pub const POPULATE_2D: &str = "vector.populate_2d";
 /// Id of [`populate_3d`].
 pub const POPULATE_3D: &str = "vector.populate_3d";
+/// Id of [`populate_geometry`].
+pub const POPULATE_GEOMETRY: &str = "vector.populate_geometry";
 
 /// The most points one call may add (one million).
 pub const MAX_POPULATION: usize = 1_000_000;
@@ -26,6 +32,7 @@ pub const MAX_POPULATION: usize = 1_000_000;
 pub fn register(registry: &mut NodeRegistry) {
     registry.register(populate_2d());
     registry.register(populate_3d());
+    registry.register(populate_geometry());
 }
 
 fn populate(id: &str, name: &str, nickname: &str, region: Port) -> NodeType {
@@ -157,10 +164,73 @@ pub fn populate_3d() -> NodeType {
     })
 }
 
+/// Populate Geometry \[PopGeo\]: random points spread over curves, surfaces, B-reps and
+/// meshes.
+pub fn populate_geometry() -> NodeType {
+    populate(
+        POPULATE_GEOMETRY,
+        "Populate Geometry",
+        "PopGeo",
+        Port::new("Geometry", "G", DataType::Generic).doc(
+            "The geometry to populate: a curve (line, circle, arc), surface, brep, box or mesh.",
+        ),
+    )
+    .gh_guid("c8cb6a5c-2ffd-4095-ba2a-5c35015e09e4")
+    .description(
+        "Populates a curve, surface, brep or mesh with N points, reproducibly from a seed: \
+         candidates are drawn uniformly by length (curves) or area (the rest), and each point \
+         is the best of several (the one farthest, in space, from the points already placed \
+         and the existing points P), so the points spread out evenly. Points lie exactly on \
+         the curve or surface, inside a brep's trims; the draw follows the geometry's mesh \
+         (default meshing parameters), so its density is uniform to the mesh's accuracy. \
+         Geometry without length or area, or of another type, is an error.",
+    )
+    .solve(|s| {
+        let value = s.value(0).ok_or("input G has no geometry")?;
+        let parameters = MeshingParameters::default();
+        let brep: Brep;
+        let curve: Shared<Curve>;
+        let sampler = match &value {
+            Value::Curve(_) | Value::Line(_) | Value::Circle(_) | Value::Arc(_) => {
+                curve = crate::curve::curve_from_value(&value).ok_or("not a curve")?;
+                crate::curve::valid_curve(&curve, "G")?;
+                GeometrySampler::curve(&curve, &parameters)?
+            }
+            Value::Surface(surface) => {
+                brep = Brep::from_surface(surface.as_ref().clone())?;
+                GeometrySampler::brep(&brep, &parameters)?
+            }
+            Value::Box(b) => {
+                brep = Brep::from_box(b)?;
+                GeometrySampler::brep(&brep, &parameters)?
+            }
+            Value::Brep(b) => GeometrySampler::brep(b, &parameters)?,
+            Value::Mesh(m) => GeometrySampler::mesh(m)?,
+            other => {
+                return Err(format!(
+                    "a {} cannot be populated: give a curve, surface, brep, box or mesh",
+                    other.data_type().name().to_lowercase()
+                )
+                .into());
+            }
+        };
+        let n = count(s)?;
+        let seed = *s.item::<i64>(2)? as i32;
+        let existing: Vec<Point3> = match s.list::<Point3>(3) {
+            Ok(list) => list.present().copied().collect(),
+            Err(_) => Vec::new(),
+        };
+        let mut random = DotNetRandom::new(seed);
+        let points = spread_points(&sampler, n, &existing, || random.next_double());
+        s.set_list(0, points);
+        Ok(())
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use locus_kernel::{Interval, Plane, Polyline};
-    use locus_runtime::{DataTree, NodeCall};
+    use locus_runtime::{DataTree, NodeCall, Value};
 
     use super::*;
     use crate::test_support::{assert_error, points};
@@ -234,6 +304,63 @@ mod tests {
             .input(DataTree::from_item(flat))
             .run();
         assert_error(&r, "not a valid box with volume");
+    }
+
+    fn run_geometry(geometry: Value, n: i64) -> locus_runtime::NodeCallResult {
+        NodeCall::new(&populate_geometry())
+            .input(DataTree::from_value(geometry))
+            .input(DataTree::from_item(n))
+            .run()
+    }
+
+    #[test]
+    fn populate_geometry_puts_points_on_curves_surfaces_and_meshes() {
+        let sphere = locus_kernel::Sphere::new(Point3::ORIGIN, 2.0)
+            .unwrap()
+            .to_nurbs()
+            .unwrap();
+        let r = run_geometry(Value::Surface(Shared::new(sphere)), 100);
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let pts = points(&r.outputs[0]);
+        assert_eq!(pts.len(), 100);
+        assert!(
+            pts.iter()
+                .all(|p| (p.distance(Point3::ORIGIN) - 2.0).abs() < 1e-9)
+        );
+        let line = locus_kernel::Line::new(Point3::ORIGIN, Point3::new(10.0, 0.0, 0.0));
+        let r = run_geometry(Value::Line(line), 10);
+        let pts = points(&r.outputs[0]);
+        assert_eq!(pts.len(), 10);
+        assert!(
+            pts.iter()
+                .all(|p| p.y == 0.0 && (0.0..=10.0).contains(&p.x))
+        );
+        let b = OrientedBox::new(
+            Plane::WORLD_XY,
+            Interval::new(0.0, 1.0),
+            Interval::new(0.0, 2.0),
+            Interval::new(0.0, 3.0),
+        );
+        let r = run_geometry(Value::Box(b), 30);
+        let on_boundary = |p: &Point3| {
+            let eps = 1e-9;
+            [p.x, p.y / 2.0, p.z / 3.0]
+                .iter()
+                .any(|c| c.abs() < eps || (c - 1.0).abs() < eps)
+        };
+        assert!(points(&r.outputs[0]).iter().all(on_boundary));
+    }
+
+    #[test]
+    fn populate_geometry_refuses_what_it_cannot_populate() {
+        assert_error(
+            &run_geometry(Value::Number(1.0), 5),
+            "a number cannot be populated",
+        );
+        let r = run_geometry(Value::Point(Point3::ORIGIN), 5);
+        assert_error(&r, "cannot be populated");
+        let empty = locus_kernel::Mesh::default();
+        assert_error(&run_geometry(Value::Mesh(Shared::new(empty)), 5), "no area");
     }
 
     #[test]
