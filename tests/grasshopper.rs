@@ -79,3 +79,43 @@ fn run_reads_gh_and_export_round_trips() {
     assert!(out.contains("Circle (R:3.6 at {0, 0, 0})"), "{out}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn the_curvature_tutorial_agrees_with_the_curvature_component() {
+    // runxel's calculate_curvature computes the curvature vector from Derivatives with
+    // Grasshopper's vector syntax, T = [d1] and (d2-(d2 • T) *T)/(d1•d1) (Panel 1), beside the
+    // length of the Curvature component's vector (Panel 2). On the parabola (t, t², 0) at
+    // t = 0.5 the curvature vector is (−0.5, 0.5, 0), of length 1/√2.
+    let file = "crates/ghx/tests/data/runxel__calculate_curvature.ghx";
+    let (code, out, err) = locus(&[
+        "run",
+        file,
+        "--set",
+        "Curve=(degree: 2, points: [(0, 0, 0), (0.5, 0, 0), (1, 1, 0)], knots: [0, 0, 1, 1])",
+        "--set",
+        "t=0.5",
+    ]);
+    // The run reports one error: the file's third formula waits for Deconstruct Arc, which
+    // locus lacks.
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        out.contains("node \"expression_3\" at {0}[0]: input r has no data"),
+        "{out}"
+    );
+    let after = |label: &str| {
+        let start = out
+            .find(&format!("{label}:\n"))
+            .unwrap_or_else(|| panic!("{out}"));
+        out[start..]
+            .lines()
+            .nth(2)
+            .unwrap_or_default()
+            .trim()
+            .to_owned()
+    };
+    assert_eq!(
+        after("Panel 1"),
+        "0. {-0.4999999999999999, 0.5000000000000001, 0}"
+    );
+    assert_eq!(after("Panel 2"), "0. 0.7071067811865476");
+}

@@ -96,7 +96,7 @@ fn an_unreadable_input_expression_is_left_out_with_a_warning() {
     let ron = r#"(format: 1, nodes: [
   (id: "s", type: "sets.series", values: {"S": 0.0, "N": 1.0, "C": 3}),
 ], outputs: {"series": "s.S"})"#;
-    let (out, report) = run(&with_expression(ron, "N", "x • x"), "series");
+    let (out, report) = run(&with_expression(ron, "N", "x @ x"), "series");
     assert_eq!(out, numbers("{0;0}", &[0.0, 1.0, 2.0]));
     assert!(report.contains("unsupported-input-expression"), "{report}");
 }

@@ -349,6 +349,38 @@ mod tests {
     }
 
     #[test]
+    fn grasshoppers_curvature_formula_with_dot_and_unit_vector() {
+        // runxel's calculate_curvature tutorial: T = [d1], then the curvature vector
+        // (d2 − (d2 • T) T) / (d1 • d1). For the parabola (t, t²) at t = 1/2: d1 = (1, 1),
+        // d2 = (0, 2), d2 • T = √2, and the curvature vector is ((0, 2) − (1, 1)) / 2.
+        let d1 = Operand::Vector(Vector3::new(1.0, 1.0, 0.0));
+        let d2 = Operand::Vector(Vector3::new(0.0, 2.0, 0.0));
+        let t = eval("[d1]", &["d1"], std::slice::from_ref(&d1)).value;
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        let Operand::Vector(unit) = t else {
+            panic!("{t:?}")
+        };
+        assert!(
+            (unit - Vector3::new(h, h, 0.0)).length() < 1e-15,
+            "{unit:?}"
+        );
+        let k = eval("(d2-(d2 • T) *T)/(d1•d1)", &["d1", "d2", "T"], &[d1, d2, t]).value;
+        let Operand::Vector(k) = k else {
+            panic!("{k:?}")
+        };
+        assert!((k - Vector3::new(-0.5, 0.5, 0.0)).length() < 1e-15, "{k:?}");
+        // Brackets bind as parentheses do; a number has no unit vector.
+        let v = Operand::Vector(Vector3::new(0.0, 0.0, 2.0));
+        let r = eval("[v + v] * 3", &["v"], &[v]).value;
+        assert_eq!(r, Operand::Vector(Vector3::new(0.0, 0.0, 3.0)));
+        let e = Program::compile("[x]", &["x"])
+            .unwrap()
+            .evaluate(|_| Ok(Operand::Number(1.0)))
+            .unwrap_err();
+        assert!(e.to_string().contains("unit needs a Vector"), "{e}");
+    }
+
+    #[test]
     fn member_access() {
         let v = Operand::Vector(Vector3::new(1.0, 2.0, 3.0));
         let r = eval("v.Y * 10 + v.z", &["v"], &[v]);

@@ -55,6 +55,9 @@ pub enum Function {
     Trunc,
     /// `frac(x)`: the fraction, `x − trunc(x)` (it has the sign of x).
     Frac,
+    /// `unit(v)`, also written `[v]` as in Grasshopper: the vector (or a point's position
+    /// vector) scaled to length 1; a zero vector is an error.
+    Unit,
 }
 
 /// Every function with its name, for lookup and documentation.
@@ -83,6 +86,7 @@ pub const FUNCTIONS: &[(&str, Function)] = &[
     ("ceil", Function::Ceiling),
     ("trunc", Function::Trunc),
     ("frac", Function::Frac),
+    ("unit", Function::Unit),
 ];
 
 impl Function {
@@ -118,6 +122,23 @@ impl Function {
     /// [`EvalError::Argument`] when an argument is not a number (or, for `abs`, a vector or
     /// point); [`EvalError::Digits`] for a bad digit count in `round`.
     pub fn apply(self, args: &[Operand]) -> Result<Operand, EvalError> {
+        if self == Function::Unit {
+            let v = match args {
+                [Operand::Vector(v)] => *v,
+                [Operand::Point(p)] => p.to_vector(),
+                [other, ..] => {
+                    return Err(EvalError::VectorArgument {
+                        function: self.name(),
+                        got: other.kind(),
+                    });
+                }
+                [] => return Err(EvalError::Internal("missing argument")),
+            };
+            return v
+                .try_normalize()
+                .map(Operand::Vector)
+                .ok_or(EvalError::ZeroVector);
+        }
         if self == Function::Abs
             && let [Operand::Vector(v)] = args
         {
@@ -196,6 +217,7 @@ impl Function {
             Function::Ceiling => x.ceil(),
             Function::Trunc => x.trunc(),
             Function::Frac => x - x.trunc(),
+            Function::Unit => unreachable!("handled above"),
         };
         Ok(Operand::Number(r))
     }
@@ -245,6 +267,29 @@ mod tests {
     fn abs_of_a_vector_is_its_length() {
         let v = Operand::Vector(locus_kernel::Vector3::new(3.0, 4.0, 0.0));
         assert_eq!(Function::Abs.apply(&[v]), Ok(Operand::Number(5.0)));
+    }
+
+    #[test]
+    fn unit_scales_vectors_and_points_to_length_one() {
+        let v = Operand::Vector(locus_kernel::Vector3::new(3.0, 0.0, 4.0));
+        assert_eq!(
+            Function::Unit.apply(&[v]),
+            Ok(Operand::Vector(locus_kernel::Vector3::new(0.6, 0.0, 0.8)))
+        );
+        let p = Operand::Point(locus_kernel::Point3::new(0.0, -2.0, 0.0));
+        assert_eq!(
+            Function::Unit.apply(&[p]),
+            Ok(Operand::Vector(locus_kernel::Vector3::new(0.0, -1.0, 0.0)))
+        );
+        let zero = Operand::Vector(locus_kernel::Vector3::ZERO);
+        assert_eq!(Function::Unit.apply(&[zero]), Err(EvalError::ZeroVector));
+        assert_eq!(
+            Function::Unit
+                .apply(&[Operand::Number(2.0)])
+                .unwrap_err()
+                .to_string(),
+            "unit needs a Vector or a Point, not a Number"
+        );
     }
 
     #[test]

@@ -2,7 +2,9 @@
 //!
 //! Columns are counted in characters from 1, so that an error can point at the fault in the
 //! formula as the user typed it. Besides ASCII the lexer accepts the mathematical symbols
-//! `−` (minus), `×` and `·` (times), `÷` (divide), `≤`, `≥` and `≠`.
+//! `−` (minus), `×`, `·` and `•` (times; between vectors Grasshopper writes the dot product
+//! `a • b`, which `*` already is), `÷` (divide), `≤`, `≥` and `≠`, and the brackets of
+//! Grasshopper's unit vector `[v]`.
 
 use std::fmt;
 use std::sync::Arc;
@@ -23,7 +25,7 @@ pub(crate) enum TokenKind {
     Plus,
     /// `-` or `−`
     Minus,
-    /// `*`, `×` or `·`
+    /// `*`, `×`, `·` or `•`
     Star,
     /// `/` or `÷`
     Slash,
@@ -49,6 +51,10 @@ pub(crate) enum TokenKind {
     LeftParen,
     /// `)`
     RightParen,
+    /// `[`
+    LeftBracket,
+    /// `]`
+    RightBracket,
     /// `,`
     Comma,
     /// `.` (followed by `x`, `y` or `z`)
@@ -78,6 +84,8 @@ impl fmt::Display for TokenKind {
             TokenKind::NotEqual => "!=",
             TokenKind::LeftParen => "(",
             TokenKind::RightParen => ")",
+            TokenKind::LeftBracket => "[",
+            TokenKind::RightBracket => "]",
             TokenKind::Comma => ",",
             TokenKind::Dot => ".",
             TokenKind::End => "the end of the expression",
@@ -125,13 +133,15 @@ pub(crate) fn tokenize(source: &str) -> Result<Vec<Token>, ParseError> {
             }
             '+' => (TokenKind::Plus, 1),
             '-' | '−' => (TokenKind::Minus, 1),
-            '*' | '×' | '·' => (TokenKind::Star, 1),
+            '*' | '×' | '·' | '•' => (TokenKind::Star, 1),
             '/' | '÷' => (TokenKind::Slash, 1),
             '%' => (TokenKind::Percent, 1),
             '^' => (TokenKind::Caret, 1),
             '&' => (TokenKind::Ampersand, 1),
             '(' => (TokenKind::LeftParen, 1),
             ')' => (TokenKind::RightParen, 1),
+            '[' => (TokenKind::LeftBracket, 1),
+            ']' => (TokenKind::RightBracket, 1),
             ',' => (TokenKind::Comma, 1),
             '.' => (TokenKind::Dot, 1),
             '≤' => (TokenKind::LessEqual, 1),

@@ -112,6 +112,17 @@ pub enum EvalError {
         /// The kind of the argument.
         got: &'static str,
     },
+    /// A function of vectors got an argument that is not a vector or point.
+    #[error("{function} needs a Vector or a Point, not a {got}")]
+    VectorArgument {
+        /// The function's name.
+        function: &'static str,
+        /// The kind of the argument.
+        got: &'static str,
+    },
+    /// The unit vector of a zero vector.
+    #[error("a zero vector has no direction, so no unit vector")]
+    ZeroVector,
     /// `round(x, n)` with `n` not a whole number from 0 to 15.
     #[error("round needs 0 to 15 digits, not {0}")]
     Digits(f64),

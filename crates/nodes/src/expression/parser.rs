@@ -16,8 +16,10 @@
 //! power      := postfix ("^" unary)?
 //! postfix    := primary ("." ("x" | "y" | "z"))*
 //! primary    := number | text | "true" | "false" | name | name "(" arguments ")"
-//!             | "(" expression ")"
+//!             | "(" expression ")" | "[" expression "]"
 //! ```
+//!
+//! `[v]` is Grasshopper's unit vector of `v`, the same as `unit(v)`.
 //!
 //! Chains of operators of one level are loops, so a long sum does not deepen the recursion;
 //! only nesting (parentheses, prefix operators, `^`) does, and it is capped at
@@ -297,6 +299,12 @@ impl Parser<'_> {
             TokenKind::LeftParen => self.nested(t.column, |p| {
                 p.expression()?;
                 p.expect(&TokenKind::RightParen)
+            }),
+            TokenKind::LeftBracket => self.nested(t.column, |p| {
+                p.expression()?;
+                p.expect(&TokenKind::RightBracket)?;
+                p.emit(Op::Call(Function::Unit, 1), t.column, 1, 1);
+                Ok(())
             }),
             TokenKind::Name(name) => {
                 if self.peek().kind == TokenKind::LeftParen {
