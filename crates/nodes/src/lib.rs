@@ -82,7 +82,8 @@
 //! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,
 //!   Curve Domain \[CrvDom\], End Points \[End\], Length \[Len\], Evaluate Length \[Eval\],
 //!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\]; Derivatives \[CDiv\]
-//!   ([`curve::derivatives`], one output per derivative).
+//!   ([`curve::derivatives`], one output per derivative); Deconstruct Arc \[DArc\]
+//!   ([`curve::deconstruct_arc`]).
 //! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
 //!   Shatter; Dash Pattern \[Dash\] ([`curve::dash`]).
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].

@@ -13,6 +13,7 @@
 
 pub mod analysis;
 pub mod dash;
+pub mod deconstruct_arc;
 pub mod derivatives;
 pub mod division;
 pub mod edit;
@@ -43,6 +44,7 @@ pub fn register(registry: &mut NodeRegistry) {
     extend::register(registry);
     regions::register(registry);
     derivatives::register(registry);
+    deconstruct_arc::register(registry);
     dash::register(registry);
 }
 
