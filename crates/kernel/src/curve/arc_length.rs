@@ -33,6 +33,18 @@ const NOISE_FLOOR_ULPS: f64 = 64.0;
 /// mistyped count or a tiny length fails with a reason instead of exhausting memory.
 pub const MAX_DIVISIONS: usize = 10_000_000;
 
+/// Checks that `lengths` do not decrease (NaN is left to the per-length checks).
+pub(crate) fn check_increasing(lengths: &[f64]) -> Result<()> {
+    match lengths.windows(2).position(|w| w[1] < w[0]) {
+        Some(i) => Err(Error::InvalidInput(format!(
+            "lengths must not decrease: {} then {}",
+            lengths[i],
+            lengths[i + 1]
+        ))),
+        None => Ok(()),
+    }
+}
+
 /// Checks a division count: at least 1, at most [`MAX_DIVISIONS`].
 pub(crate) fn check_division_count(count: usize) -> Result<()> {
     if count == 0 {
@@ -222,6 +234,23 @@ impl NurbsCurve {
     /// one beyond the curve's length.
     pub fn parameter_at_length(&self, length: f64) -> Result<f64> {
         LengthTable::new(self, LENGTH_TOLERANCE).parameter_at(self, length)
+    }
+
+    /// The parameters at the arc lengths `lengths`, given in increasing order, in one pass
+    /// over one length table (linear time in all, where one [`NurbsCurve::parameter_at_length`]
+    /// per length would measure the curve again each time).
+    ///
+    /// # Errors
+    /// As [`NurbsCurve::parameter_at_length`]; [`Error::InvalidInput`] for lengths that
+    /// decrease.
+    pub fn parameters_at_lengths(&self, lengths: &[f64]) -> Result<Vec<f64>> {
+        check_increasing(lengths)?;
+        let table = LengthTable::new(self, LENGTH_TOLERANCE);
+        let mut cursor = Cursor::default();
+        lengths
+            .iter()
+            .map(|&s| table.parameter_from(self, s, &mut cursor, true))
+            .collect()
     }
 
     /// The parameter at the fraction `fraction ∈ [0, 1]` of the curve's length.

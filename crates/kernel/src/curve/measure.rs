@@ -62,6 +62,40 @@ impl Curve {
         Ok(map.to_curve(self.natural_at_length(l)))
     }
 
+    /// The parameters at the arc lengths `lengths`, given in increasing order, in one pass
+    /// (see [`NurbsCurve::parameters_at_lengths`](crate::NurbsCurve::parameters_at_lengths)).
+    ///
+    /// # Errors
+    /// As [`Curve::parameter_at_length`]; [`Error::InvalidInput`] for lengths that decrease.
+    pub fn parameters_at_lengths(&self, lengths: &[f64]) -> Result<Vec<f64>> {
+        if let Self::Nurbs(c) = self {
+            return c.parameters_at_lengths(lengths);
+        }
+        crate::curve::arc_length::check_increasing(lengths)?;
+        let total = self.length();
+        let slack = 1e-12 * total.max(1.0);
+        let mut walk = LengthWalk::default();
+        lengths
+            .iter()
+            .map(|&s| {
+                if !s.is_finite() {
+                    return Err(Error::NotFinite { what: "length" });
+                }
+                if s < -slack || s > total + slack {
+                    return Err(Error::InvalidInput(format!(
+                        "length {s} is outside the curve's length 0 to {total}"
+                    )));
+                }
+                let s = s.clamp(0.0, total);
+                Ok(if s == total {
+                    self.domain().t1
+                } else {
+                    self.parameter_at_increasing_length(s, total, &mut walk)
+                })
+            })
+            .collect()
+    }
+
     /// The parameter at the fraction `fraction ∈ [0, 1]` of the length.
     ///
     /// # Errors
@@ -273,6 +307,23 @@ mod tests {
         ])
         .unwrap()
         .into()
+    }
+
+    #[test]
+    fn parameters_at_many_lengths_equal_one_at_a_time() {
+        let circle: Curve = Circle::new(Plane::WORLD_XY, 2.0).unwrap().into();
+        let nurbs = Curve::Nurbs(circle.to_nurbs());
+        for curve in [polyline(), circle, nurbs] {
+            let total = curve.length();
+            let lengths: Vec<f64> = (0..=10).map(|k| total * k as f64 / 10.0).collect();
+            let many = curve.parameters_at_lengths(&lengths).unwrap();
+            for (s, t) in lengths.iter().zip(&many) {
+                let one = curve.parameter_at_length(*s).unwrap();
+                assert!((one - t).abs() < 1e-12, "{s}: {one} vs {t}");
+            }
+            assert!(curve.parameters_at_lengths(&[1.0, 0.5]).is_err());
+            assert!(curve.parameters_at_lengths(&[total * 2.0]).is_err());
+        }
     }
 
     #[test]

@@ -125,35 +125,39 @@ pub fn dash_pattern() -> NodeType {
                 return Err(format!("the curve's length is {length}: nothing to dash").into());
             }
             let (dashes, gaps) = dash_intervals(length, &pattern)?;
-            s.set_list(0, pieces(&curve, length, &dashes)?);
-            s.set_list(1, pieces(&curve, length, &gaps)?);
+            let [dashes, gaps] = pieces(&curve, &dashes, &gaps)?;
+            s.set_list(0, dashes);
+            s.set_list(1, gaps);
             Ok(())
         })
 }
 
-/// The parts of `curve` (of length `length`) on the arc-length intervals `intervals`.
+/// The parts of `curve` on the arc-length intervals `dashes` and `gaps` (as
+/// [`dash_intervals`] gives them; the dashes' parts first), with the parameters of all their ends found in one pass.
 fn pieces(
     curve: &Curve,
-    length: f64,
-    intervals: &[Interval],
-) -> Result<Vec<Shared<Curve>>, NodeError> {
-    let domain = curve.domain();
-    let parameter = |s: f64| -> Result<f64, NodeError> {
-        if s <= 0.0 {
-            Ok(domain.t0)
-        } else if s >= length {
-            Ok(domain.t1)
-        } else {
-            Ok(curve.parameter_at_length(s)?)
-        }
-    };
-    intervals
+    dashes: &[Interval],
+    gaps: &[Interval],
+) -> Result<[Vec<Shared<Curve>>; 2], NodeError> {
+    let mut ends: Vec<f64> = dashes
         .iter()
-        .map(|piece| {
-            let (t0, t1) = (parameter(piece.t0)?, parameter(piece.t1)?);
-            Ok(Shared::new(curve.trim(Interval::new(t0, t1))?))
-        })
-        .collect()
+        .chain(gaps)
+        .flat_map(|i| [i.t0, i.t1])
+        .collect();
+    ends.sort_by(f64::total_cmp);
+    ends.dedup();
+    let parameters = curve.parameters_at_lengths(&ends)?;
+    let parameter = |s: f64| parameters[ends.partition_point(|&e| e < s)];
+    let cut = |intervals: &[Interval]| -> Result<Vec<Shared<Curve>>, NodeError> {
+        intervals
+            .iter()
+            .map(|piece| {
+                let range = Interval::new(parameter(piece.t0), parameter(piece.t1));
+                Ok(Shared::new(curve.trim(range)?))
+            })
+            .collect()
+    };
+    Ok([cut(dashes)?, cut(gaps)?])
 }
 
 #[cfg(test)]
