@@ -31,7 +31,7 @@
 //! lies inside the face's trims.
 
 use crate::intersect::curve_curve::{TANGENT_SINE, check_tolerance, nurbs_form};
-use crate::intersect::patch::Patch;
+use crate::intersect::patch::{Patch, Slab};
 use crate::intersect::piece::{Aabb, Piece, boxes_meet, diagonal};
 use crate::intersect::surface_newton::{CurveSurfacePoint, closest_curve_surface, flat_estimate};
 use crate::surface::direction::SurfaceDirection;
@@ -45,6 +45,10 @@ const MAX_DEPTH: usize = 60;
 /// At most this many leaves are polished per span and patch (a bound on the work where a
 /// curve runs within the tolerance of a surface without lying in it).
 const MAX_LEAVES: usize = 2048;
+/// How many times steeper than the bends of a flat piece and a flat patch the piece must cross
+/// the patch's plane for the pair to meet at most once (a bend of depth `d` over a width `w`
+/// reaches slopes of a few `d / w`).
+const UNIQUE_CROSSING_SLOPE: f64 = 8.0;
 /// Samples between two candidates, or along a stretch, to tell whether the curve stays in the
 /// surface there.
 const STRETCH_SAMPLES: usize = 8;
@@ -312,16 +316,43 @@ fn descend(
     if flat_c && !segment_meets_box(piece.start(), piece.end(), &box_s, tolerance + deviation) {
         return;
     }
+    // Both lie in the hulls of their control points: a piece clear of the patch's slab (across
+    // the plane of its diagonals) cannot meet it.
+    let slab = patch.slab();
+    if slab
+        .as_ref()
+        .is_some_and(|s| s.separates(piece.points(), tolerance))
+    {
+        return;
+    }
     let flat_s = patch.is_flat(FLATNESS, 0.25 * tolerance);
     let (size_c, size_s) = (diagonal(&box_c), diagonal(&box_s));
     let piece_is_larger = size_c > 2.0 * size_s && size_c > tolerance;
-    if (flat_c && flat_s && !piece_is_larger) || depth >= MAX_DEPTH || *leaves >= MAX_LEAVES {
+    let exhausted = depth >= MAX_DEPTH || *leaves >= MAX_LEAVES;
+    let tiny = size_c <= tolerance && size_s <= tolerance;
+    let flat = flat_c && flat_s && !piece_is_larger;
+    // A flat pair is one crossing at most only when the piece crosses the slab steeply; a
+    // nearly tangent pair is halved further (counted against the leaf budget, so that a piece
+    // lying on the patch cannot halve without end).
+    let once = flat
+        && (tiny
+            || slab
+                .as_ref()
+                .is_some_and(|s| crosses_once(&piece, deviation, size_s, s)));
+    if once || exhausted {
         *leaves += 1;
         let found = closest_curve_surface(whole.0, whole.1, flat_estimate(&piece, &patch));
         if found.distance <= tolerance {
             out.push(found);
+            return;
         }
-        return;
+        // The polish from the flat estimate found nothing. That settles it only when nothing is
+        // left to halve: a start on a patch can slide to a minimum on its edge.
+        if exhausted || tiny {
+            return;
+        }
+    } else if flat {
+        *leaves += 1;
     }
     if (!flat_c && (flat_s || size_c >= size_s)) || (flat_s && piece_is_larger) {
         let (l, r) = piece.halve();
@@ -332,6 +363,21 @@ fn descend(
         descend(whole, piece, l, tolerance, depth + 1, leaves, out);
         descend(whole, piece, r, tolerance, depth + 1, leaves, out);
     }
+}
+
+/// Whether a nearly straight piece crosses the slab of a nearly flat patch steeply enough to
+/// meet the patch at most once: its slope across the patch's plane exceeds
+/// [`UNIQUE_CROSSING_SLOPE`] times the slopes the bends of both can reach (each bend's depth
+/// over its width). A piece nearly tangent to the patch can cross a slightly curved patch twice
+/// (in and out again within its bend), so such pairs are halved further.
+fn crosses_once(piece: &Piece, deviation: f64, patch_size: f64, slab: &Slab) -> bool {
+    let chord = piece.end() - piece.start();
+    let length = chord.length();
+    if length == 0.0 {
+        return true;
+    }
+    let bends = slab.thickness() / patch_size.max(f64::MIN_POSITIVE) + deviation / length;
+    chord.dot(slab.normal).abs() / length >= UNIQUE_CROSSING_SLOPE * bends
 }
 
 /// Whether the segment `p0 p1` comes within `gap` of the box (the box grown by `gap`, clipped

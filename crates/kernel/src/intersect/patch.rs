@@ -156,10 +156,38 @@ impl Patch {
         [s, du, dv]
     }
 
-    /// How far the control points lie from the bilinear patch through the four corners, as a
-    /// fraction of the diagonal of the patch's box (`relative`) or absolutely (`absolute`):
-    /// whether the patch is nearly flat, where Newton's method converges from a bilinear
-    /// estimate.
+    /// The slab across the plane of the patch's diagonals that holds its control points (and
+    /// so the patch); `None` when the diagonals are parallel (a patch collapsed to a curve).
+    pub(crate) fn slab(&self) -> Option<Slab> {
+        let (nu, nv) = (self.nu, self.nv);
+        let origin = self.point(0, 0);
+        let normal = (self.point(nu - 1, nv - 1) - origin)
+            .cross(self.point(0, nv - 1) - self.point(nu - 1, 0));
+        let length = normal.length();
+        if length == 0.0 || !length.is_finite() {
+            return None;
+        }
+        let normal = normal / length;
+        let (lo, hi) = (0..nu)
+            .flat_map(|i| (0..nv).map(move |j| (i, j)))
+            .map(|(i, j)| (self.point(i, j) - origin).dot(normal))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), d| {
+                (lo.min(d), hi.max(d))
+            });
+        Some(Slab {
+            origin,
+            normal,
+            lo,
+            hi,
+        })
+    }
+
+    /// How far the control points lie from the bilinear patch through the four corners and
+    /// from the plane across its diagonals, as a fraction of the diagonal of the patch's box
+    /// (`relative`) or absolutely (`absolute`): whether the patch is nearly flat, where a line
+    /// meets it at most once and Newton's method converges from a planar estimate. A bilinear
+    /// patch's net is its corners, but when it is twisted it is a saddle that a line can cross
+    /// twice, so the distance from the plane counts too.
     pub(crate) fn is_flat(&self, relative: f64, absolute: f64) -> bool {
         let (nu, nv) = (self.nu, self.nv);
         let c = [
@@ -188,6 +216,16 @@ impl Patch {
                 deviation = deviation.max((self.point(i, j).to_vector() - bilinear).length());
             }
         }
+        // Half the slab: the distance from its middle plane. Diagonals along one line (a patch
+        // collapsed to a curve or a point) give no plane, and then only a patch within
+        // `absolute` of its first corner is flat.
+        deviation = deviation.max(match self.slab() {
+            Some(slab) => 0.5 * slab.thickness(),
+            None => (0..nu)
+                .flat_map(|i| (0..nv).map(move |j| (i, j)))
+                .map(|(i, j)| self.point(i, j).distance(c[0]))
+                .fold(0.0, f64::max),
+        });
         let bbox = self.aabb();
         let size = (0..3)
             .map(|k| (bbox[1][k] - bbox[0][k]).powi(2))
@@ -296,6 +334,33 @@ fn bezier_with_derivative(points: &[[f64; 4]], s: f64) -> ([f64; 4], [f64; 4]) {
     let derivative = std::array::from_fn(|c| k * (q[1][c] - q[0][c]));
     let point = std::array::from_fn(|c| q[0][c] + s * (q[1][c] - q[0][c]));
     (point, derivative)
+}
+
+/// The points `x` with `lo ≤ (x − origin)·normal ≤ hi`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Slab {
+    pub(crate) origin: Point3,
+    /// Unit length.
+    pub(crate) normal: Vector3,
+    pub(crate) lo: f64,
+    pub(crate) hi: f64,
+}
+
+impl Slab {
+    /// `hi − lo`.
+    pub(crate) fn thickness(&self) -> f64 {
+        self.hi - self.lo
+    }
+
+    /// Whether all of `points` lie more than `gap` outside the slab, on one side.
+    pub(crate) fn separates(&self, points: impl Iterator<Item = Point3>, gap: f64) -> bool {
+        let (lo, hi) = points
+            .map(|p| (p - self.origin).dot(self.normal))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), d| {
+                (lo.min(d), hi.max(d))
+            });
+        lo > self.hi + gap || hi < self.lo - gap
+    }
 }
 
 #[cfg(test)]
