@@ -138,6 +138,8 @@ pub enum GhItem {
     Domain2([f64; 4]),
     /// A colour (alpha, red, green, blue).
     Colour([u8; 4]),
+    /// A mesh face: vertex indices `A`, `B`, `C`, `D` (a triangle repeats `C` as `D`).
+    MeshFace([i64; 4]),
     /// Something that is not a simple value (internalised geometry, a reference): its item
     /// name.
     Other(String),
@@ -327,9 +329,24 @@ fn parse_path(text: &str) -> Vec<i64> {
     if path.is_empty() { vec![0] } else { path }
 }
 
+/// A Mesh Face item (`GH_MeshFace`): the integers `A`, `B`, `C` and `D`, and nothing else.
+fn mesh_face(chunk: &Chunk) -> Option<[i64; 4]> {
+    if chunk.items.len() != 4 || !chunk.chunks.is_empty() {
+        return None;
+    }
+    let index = |name: &str| match chunk.item(name).map(|i| &i.value) {
+        Some(Value::Int32(i)) => Some(i64::from(*i)),
+        _ => None,
+    };
+    Some([index("A")?, index("B")?, index("C")?, index("D")?])
+}
+
 fn read_item(chunk: &Chunk) -> GhItem {
     if chunk.chunk("ON_Data").is_some() || chunk.item("ON_Data").is_some() {
         return GhItem::Other("ON_Data".to_owned());
+    }
+    if let Some(face) = mesh_face(chunk) {
+        return GhItem::MeshFace(face);
     }
     // Generic data carries a `TypeName` item beside the value; a text carries a `null_string`
     // flag before it.
@@ -361,5 +378,46 @@ fn read_item(chunk: &Chunk) -> GhItem {
             Some(x) => GhItem::Number(x),
             None => GhItem::Other(item.name.clone()),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Limits;
+    use crate::xml::read_xml;
+
+    fn item_of(items: &str) -> GhItem {
+        let xml = format!(
+            r#"<?xml version="1.0"?><Archive name="Root"><items count="0" /><chunks count="1"><chunk name="Item" index="0">{items}</chunk></chunks></Archive>"#
+        );
+        let root = read_xml(xml.as_bytes(), &Limits::default()).unwrap();
+        read_item(&root.chunks[0])
+    }
+
+    fn int(name: &str, value: i32) -> String {
+        format!(r#"<item name="{name}" type_name="gh_int32" type_code="3">{value}</item>"#)
+    }
+
+    #[test]
+    fn mesh_faces_typed_into_an_input_are_read_as_faces() {
+        let quad = format!(
+            r#"<items count="4">{}{}{}{}</items>"#,
+            int("A", 0),
+            int("B", 1),
+            int("C", 2),
+            int("D", 3)
+        );
+        assert_eq!(item_of(&quad), GhItem::MeshFace([0, 1, 2, 3]));
+        let triangle = quad.replace(&int("D", 3), &int("D", 2));
+        assert_eq!(item_of(&triangle), GhItem::MeshFace([0, 1, 2, 2]));
+        // Three integers are not a face: the first is read as before.
+        let three = format!(
+            r#"<items count="3">{}{}{}</items>"#,
+            int("A", 4),
+            int("B", 1),
+            int("C", 2)
+        );
+        assert_eq!(item_of(&three), GhItem::Integer(4));
     }
 }

@@ -88,6 +88,15 @@ pub fn item(item: &GhItem, target: DataType) -> Option<String> {
         ),
         // locus has no colour type: a colour is its text "a;r;g;b" as Grasshopper prints it.
         GhItem::Colour([a, r, g, b]) => text(&format!("{a};{r};{g};{b}")),
+        // locus has no mesh face type: a face is its text as Grasshopper prints it, which is
+        // what Construct Mesh reads (a triangle repeats its third index).
+        GhItem::MeshFace([a, b, c, d]) => {
+            if c == d {
+                text(&format!("T{{{a};{b};{c}}}"))
+            } else {
+                text(&format!("Q{{{a};{b};{c};{d}}}"))
+            }
+        }
         GhItem::Other(_) => return None,
     })
 }
@@ -142,5 +151,17 @@ mod tests {
         };
         assert_eq!(tree(&v, DataType::Generic).0, "Vector(0.0, 0.0, 1.0)");
         assert_eq!(text("a\"b\\\n"), r#""a\"b\\\n""#);
+        let faces = GhTree {
+            branches: vec![(
+                vec![0],
+                vec![
+                    GhItem::MeshFace([0, 1, 2, 3]),
+                    GhItem::MeshFace([4, 5, 6, 6]),
+                ],
+            )],
+        };
+        let lit = tree(&faces, DataType::Text);
+        assert_eq!(lit.0, r#"["Q{0;1;2;3}", "T{4;5;6}"]"#);
+        locus_runtime::parse_literal(&lit.0, DataType::Text).unwrap();
     }
 }
