@@ -253,7 +253,11 @@ mod tests {
         let brep = Brep::from_surface(sphere.to_nurbs().unwrap()).unwrap();
         let sampler = GeometrySampler::brep(&brep, &MeshingParameters::default()).unwrap();
         let area = 4.0 * std::f64::consts::PI * 9.0;
-        assert!((sampler.measure() - area).abs() < 0.01 * area);
+        assert!(
+            (sampler.measure() - area).abs() < 0.01 * area,
+            "{} {area}",
+            sampler.measure()
+        );
         let points = spread_points(&sampler, 200, &[], lcg(7));
         assert_eq!(points.len(), 200);
         for p in &points {

@@ -11,17 +11,30 @@
 //! side collapse into a fan around that vertex and the degenerate ones are dropped.
 //!
 //! The parameter plane is scaled by the surface's mean speed in each direction before
-//! triangulating, so that the Delaunay criterion sees shapes close to those on the surface.
+//! triangulating, so that the Delaunay criterion sees shapes close to those on the surface,
+//! and its interior nodes sheared by a millionth so that no grid cell is a Delaunay tie
+//! ([`SHEAR`]).
 
 use spade::{ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation};
 
 use crate::mesh::parameters::{MAX_MESH_VERTICES, MeshingParameters, SURFACE_CHORD_SHARE};
 use crate::mesh::sampling::{Family, Probe, thin_out};
+use crate::surface::across::AcrossFrames;
 use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{Brep, Error, Mesh, MeshFace, NurbsCurve, NurbsSurface, Point3, Result, Vector3};
 
 /// How many isocurves probe one direction of a surface, at most.
 const MAX_PROBE_CURVES: usize = 65;
+
+/// The shear of the interior grid nodes in the scaled parameter plane, `x + SHEAR · y`: it
+/// makes the grid's cells parallelograms, whose corners are never on one circle. On an exact
+/// rectangle grid every cell is a tie for the Delaunay criterion, which spade's exact
+/// predicates can only settle on their slow adaptive path (a third of the meshing time), and
+/// each cell's diagonal is left to the tie-break; sheared, every cell is cut along the same
+/// diagonal, on the fast path. The boundary points are not sheared: rounding would take points
+/// of a straight side off their line, and the triangulation would fill the dents with slivers.
+/// A millionth of a cell leaves the interior nodes far inside their clearance from the trims.
+const SHEAR: f64 = 1e-6;
 
 /// Interior grid nodes nearer than this fraction of the local grid cell to a trim are left
 /// out, so that no sliver forms between a grid node and a boundary point.
@@ -32,6 +45,8 @@ const BOUNDARY_CLEARANCE: f64 = 0.3;
 struct UvVertex {
     position: Point2<f64>,
     id: u32,
+    /// The surface parameters (the position is scaled, and sheared for interior nodes).
+    uv: [f64; 2],
 }
 
 impl HasPosition for UvVertex {
@@ -122,17 +137,14 @@ fn surface_parameters(
     }
     across.extend(other_breaks.last());
     let across = thin_out(&across, MAX_PROBE_CURVES);
+    let mut frames = AcrossFrames::new(surface, direction, &across);
     let mut eval = |t: f64, out: &mut Vec<Probe>| {
-        for &s in &across {
-            let (u, v) = match direction {
-                SurfaceDirection::U => (t, s),
-                SurfaceDirection::V => (s, t),
-            };
+        frames.eval(t, |point, normal| {
             out.push(Probe {
-                point: surface.point_at(u, v),
-                direction: surface.normal_at(u, v).ok(),
+                point,
+                direction: normal,
             });
-        }
+        });
     };
     Family::new(&mut eval).refine(&surface.span_breaks(direction), limits)
 }
@@ -379,6 +391,7 @@ fn mesh_face(
             cdt_vertices.push(UvVertex {
                 position: Point2::new(q.0, q.1),
                 id: p.id,
+                uv: [p.uv.0, p.uv.1],
             });
         }
         let n = points.len();
@@ -422,8 +435,9 @@ fn mesh_face(
         }
         let q = scaled((u, v));
         cdt_vertices.push(UvVertex {
-            position: Point2::new(q.0, q.1),
+            position: Point2::new(q.0 + SHEAR * q.1, q.1),
             id,
+            uv: [u, v],
         });
     }
     // Boundary vertices get the average of the normals of the faces they border.
@@ -463,10 +477,9 @@ fn mesh_face(
             }
         }
         if b.record {
-            let uv = |q: Point2<f64>| [q.x / su + du.t0, q.y / sv + dv.t0];
             b.face_triangles.push(FaceTriangle {
                 face: f,
-                uv: [uv(a.position), uv(c.position), uv(d.position)],
+                uv: [a.uv, c.uv, d.uv],
             });
         }
         // spade's faces are counter-clockwise in the (u, v) plane, i.e. along Su × Sv.

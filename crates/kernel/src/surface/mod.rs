@@ -8,6 +8,7 @@
 //! `i · count_v + j`: rows run along `u`, and each row holds the `count_v` points of one
 //! `v` column, exactly like the `cvs_u_by_v[i][j]` arrays of the reference cases.
 
+pub(crate) mod across;
 pub(crate) mod bezier_patch;
 pub(crate) mod bounding_box;
 pub(crate) mod closest_point;
