@@ -9,10 +9,17 @@ use locus_runtime::{Evaluator, NodeRegistry};
 use crate::graph_file::RunLimits;
 use crate::write_file::write_bytes_atomically;
 
-/// The scene of the named outputs of an evaluated graph that `--output` selects.
+/// The scene of the named outputs of an evaluated graph that `--output` selects, or with
+/// `--preview` of every node's outputs, named `node.output`.
 pub(crate) fn scene(evaluator: &Evaluator, limits: &RunLimits) -> Scene {
     let mut scene = Scene::new();
     let settings = Tessellation::default();
+    if limits.previews_every_node() {
+        for (node, output, tree) in evaluator.node_outputs() {
+            scene.add_output(&format!("{node}.{output}"), tree, &settings);
+        }
+        return scene;
+    }
     for (name, tree) in evaluator.outputs().filter(|(name, _)| limits.selects(name)) {
         scene.add_output(name, tree, &settings);
     }

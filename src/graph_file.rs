@@ -35,9 +35,19 @@ pub(crate) struct RunLimits {
     /// than a second).
     #[arg(long, short = 'q')]
     quiet: bool,
+    /// Draw or export the geometry of every node's outputs (named NODE.OUTPUT), as
+    /// Grasshopper's canvas preview shows it, instead of the named outputs only (locus render,
+    /// locus view and --export).
+    #[arg(long)]
+    preview: bool,
 }
 
 impl RunLimits {
+    /// Whether `--preview` asks for every node's geometry.
+    pub(crate) fn previews_every_node(&self) -> bool {
+        self.preview
+    }
+
     /// The runtime limits these options ask for.
     fn limits(&self) -> Result<Limits, String> {
         let mut limits = Limits::default();
@@ -190,6 +200,10 @@ pub(crate) fn prepare(
     let mut evaluator = evaluator(&loaded.checked, threads).map_err(usage)?;
     crate::progress::attach(&mut evaluator, run_limits.quiet);
     evaluator.set_limits(run_limits.limits().map_err(usage)?);
+    if run_limits.preview {
+        // Every output is drawn: keep them all rather than run nodes again for them.
+        evaluator.keep_all_outputs();
+    }
     let known: Vec<&str> = evaluator.output_names().collect();
     if let Some(bad) = run_limits
         .outputs

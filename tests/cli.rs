@@ -387,3 +387,39 @@ fn sub_graphs_run_and_report_inner_nodes_by_nested_id() {
     assert!(err.contains("parts/bad.ron:3:"), "{err}");
     assert!(err.contains("\"c/a\""), "{err}");
 }
+
+#[test]
+fn preview_draws_and_exports_every_nodes_geometry() {
+    let dir = std::env::temp_dir().join(format!("locus-cli-preview-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let (named, every, png) = (
+        dir.join("named.gltf"),
+        dir.join("every.gltf"),
+        dir.join("every.png"),
+    );
+    let path = |p: &std::path::Path| p.to_str().expect("a UTF-8 path").to_owned();
+    let graph = "graphs/face_direction.ron";
+    let o = locus(&["run", graph, "--export", &path(&named)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = locus(&["run", graph, "--preview", "--export", &path(&every)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // The sphere is no named output: only the preview holds it, named by node and output.
+    let named = std::fs::read_to_string(&named).expect("exported");
+    let every = std::fs::read_to_string(&every).expect("exported");
+    assert!(!named.contains("\"sphere.S\""), "{named}");
+    assert!(every.contains("\"sphere.S\""));
+    assert!(every.contains("\"closest.P\""));
+    let o = locus(&[
+        "render",
+        graph,
+        "--preview",
+        "-o",
+        &path(&png),
+        "--size",
+        "64x48",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bytes = std::fs::read(&png).expect("drawn");
+    assert!(bytes.starts_with(b"\x89PNG"), "not a PNG");
+    std::fs::remove_dir_all(&dir).ok();
+}

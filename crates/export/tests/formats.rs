@@ -11,16 +11,31 @@ use locus_kernel::{BoundingBox, Color, Point3};
 use locus_runtime::{Evaluator, NodeRegistry};
 
 fn scene_of(graph: &str) -> Scene {
+    scene_with(graph, false)
+}
+
+/// The scene of a graph's named outputs, or (`preview`) of every node's outputs as
+/// `locus render --preview` draws them.
+fn scene_with(graph: &str, preview: bool) -> Scene {
     let mut registry = NodeRegistry::new();
     locus_nodes::register(&mut registry);
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../graphs")
         .join(graph);
     let mut evaluator = Evaluator::from_file(&path, &registry).expect("graph loads");
+    if preview {
+        evaluator.keep_all_outputs();
+    }
     evaluator.evaluate();
     let mut scene = Scene::new();
-    for (name, tree) in evaluator.outputs() {
-        scene.add_output(name, tree, &Tessellation::default());
+    if preview {
+        for (node, output, tree) in evaluator.node_outputs() {
+            scene.add_output(&format!("{node}.{output}"), tree, &Tessellation::default());
+        }
+    } else {
+        for (name, tree) in evaluator.outputs() {
+            scene.add_output(name, tree, &Tessellation::default());
+        }
     }
     assert!(scene.skipped.is_empty(), "{:?}", scene.skipped);
     scene
@@ -160,13 +175,25 @@ fn svg_is_well_formed_and_holds_every_item() {
 
 #[test]
 fn pictures_of_the_tutorials_are_not_blank_and_fit_the_geometry() {
-    for graph in [
+    let named = [
         "exploded_box.ron",
         "tangent_spheres.ron",
         "multiple_transformations.ron",
         "face_direction.ron",
-    ] {
-        let scene = scene_of(graph);
+    ]
+    .map(|g| (g, false));
+    // Every tutorial as `locus render --preview` draws it (every node's geometry).
+    let previews = [
+        "exploded_box.ron",
+        "tangent_spheres.ron",
+        "multiple_transformations.ron",
+        "face_direction.ron",
+        "curve_continuity_tutorial.ron",
+        "surface_singularity.ron",
+    ]
+    .map(|g| (g, true));
+    for (graph, preview) in named.into_iter().chain(previews) {
+        let scene = scene_with(graph, preview);
         for view in [View::Top, View::Front, View::Iso] {
             let options = PictureOptions {
                 view,
@@ -176,7 +203,7 @@ fn pictures_of_the_tutorials_are_not_blank_and_fit_the_geometry() {
             };
             let pixmap = render(&scene, &options).unwrap();
             let (x0, y0, x1, y1) = drawn_extent(&pixmap, Color::WHITE)
-                .unwrap_or_else(|| panic!("{graph} {view:?} is blank"));
+                .unwrap_or_else(|| panic!("{graph} {view:?} (preview {preview}) is blank"));
             // The geometry fills 90 % of the tighter side, centred.
             let (w, h) = (f64::from(x1 - x0 + 1), f64::from(y1 - y0 + 1));
             assert!(

@@ -722,6 +722,26 @@ impl Evaluator {
             .map(|(name, node, port)| (name.as_str(), self.tree(*node, *port)))
     }
 
+    /// Every output of every node with its data, as `(node id, output nickname, tree)`, in the
+    /// graph's node order: what Grasshopper's canvas preview draws. An output that no wire and
+    /// no named output reads is computed on this request (its node runs again) unless
+    /// [`keep_all_outputs`](Self::keep_all_outputs) was called before the evaluation.
+    pub fn node_outputs(&self) -> impl Iterator<Item = (&str, &str, &DataTree)> {
+        self.plan
+            .nodes
+            .iter()
+            .enumerate()
+            .flat_map(move |(i, node)| {
+                node.node_type
+                    .outputs
+                    .iter()
+                    .enumerate()
+                    .map(move |(k, port)| {
+                        (node.id.0.as_str(), port.nickname.as_str(), self.tree(i, k))
+                    })
+            })
+    }
+
     /// The data of output `port` (nickname or name) of node `node`.
     pub fn node_output(&self, node: &str, port: &str) -> Option<&DataTree> {
         let i = self.plan.nodes.iter().position(|n| n.id.0 == node)?;
