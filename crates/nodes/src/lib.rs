@@ -15,7 +15,8 @@
 //! - Box, B-rep, any geometry, transforms ([`params::brep`]): Box, Brep, Geometry \[Geo\]
 //!   (Params › Geometry), Transform (Params › Primitive).
 //! - Data, Relay, Line, Circle, Arc, Rectangle \[Rec\] ([`params::shapes`]); Graph Mapper
-//!   \[Graph\] (Params › Input, [`params::graph_mapper`]).
+//!   \[Graph\] (Params › Input, [`params::graph_mapper`]); Data Dam \[Dam\] (Params › Util,
+//!   [`params::dam`]).
 //!
 //! **Maths** ([`maths`])
 //! - Operators ([`maths::operators`], [`maths::comparison`], [`maths::boolean`]): Addition

@@ -47,10 +47,7 @@ pub fn derivatives() -> NodeType {
         .solve(|s| {
             let curve = curve_input(s, 0)?;
             let t = parameter_on(s, 1, &curve)?;
-            let mut order = 0;
-            while s.output_port(order + 1).is_some() {
-                order += 1;
-            }
+            let order = s.output_count().saturating_sub(1);
             let derivatives = curve.derivatives_at(t, order);
             if derivatives.iter().any(|d| !d.is_finite()) {
                 return Err(format!("the curve's derivatives at {t} are not finite").into());

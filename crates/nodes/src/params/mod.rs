@@ -8,6 +8,7 @@
 
 pub mod brep;
 pub mod curve;
+pub mod dam;
 pub mod geometry;
 pub mod mesh;
 
@@ -28,5 +29,6 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
 
     shapes::register(registry);
+    dam::register(registry);
     graph_mapper::register(registry);
 }

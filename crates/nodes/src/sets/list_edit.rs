@@ -433,9 +433,6 @@ pub fn weave() -> NodeType {
         })
 }
 
-/// The number of outputs of Sift Pattern (Grasshopper's default instance).
-pub const SIFT_OUTPUTS: usize = 2;
-
 /// Sift Pattern \[Sift\]: the items of a list sent to outputs by a repeating pattern.
 pub fn sift_pattern() -> NodeType {
     list_node(SIFT_PATTERN, "Sift Pattern", "Sift")
@@ -443,9 +440,9 @@ pub fn sift_pattern() -> NodeType {
         .description(
             "Sifts a list into outputs by a repeating pattern of output indices: item k goes \
              to output P[k mod |P|] and every other output gets a null at that place, so all \
-             outputs keep the length of the list and stay aligned with it. The node has \
-             Grasshopper's default two outputs (the runtime has no variable outputs yet): a \
-             pattern index other than 0 and 1 sends its items nowhere, with a warning.",
+             outputs keep the length of the list and stay aligned with it. The outputs are \
+             variable, 0, 1, … as Grasshopper names them (two by default); a pattern index \
+             that names no output sends its items nowhere, with a warning.",
         )
         .input(generic_list("List", "L", "The list to sift, of any type."))
         .input(
@@ -457,16 +454,14 @@ pub fn sift_pattern() -> NodeType {
                       with an empty list) [0, 1].",
                 ),
         )
-        .output(generic_list(
-            "Output 0",
-            "0",
-            "The items sifted to output 0, nulls elsewhere.",
-        ))
-        .output(generic_list(
-            "Output 1",
-            "1",
-            "The items sifted to output 1, nulls elsewhere.",
-        ))
+        .variable_outputs(
+            generic_list(
+                "Output",
+                "0",
+                "The items sifted to this output (0, 1, …), nulls elsewhere.",
+            ),
+            &["0", "1"],
+        )
         .solve(|s| {
             let list = branch_of(s, 0);
             let mut pattern = match s.branch(1) {
@@ -476,8 +471,9 @@ pub fn sift_pattern() -> NodeType {
             if pattern.is_empty() {
                 pattern = vec![0, 1];
             }
+            let outputs = s.output_count();
             let mut lost = 0_usize;
-            for out in 0..SIFT_OUTPUTS {
+            for out in 0..outputs {
                 let picks = (0..list.len()).map(|k| {
                     let p = pattern[k % pattern.len()];
                     (usize::try_from(p).ok() == Some(out)).then_some(k)
@@ -486,13 +482,14 @@ pub fn sift_pattern() -> NodeType {
             }
             for k in 0..list.len() {
                 let p = pattern[k % pattern.len()];
-                if !(0..SIFT_OUTPUTS as i64).contains(&p) {
+                if usize::try_from(p).map_or(true, |p| p >= outputs) {
                     lost += 1;
                 }
             }
             if lost > 0 {
                 s.warning(format!(
-                    "{lost} items have a pattern index other than 0 and 1 and were sent nowhere"
+                    "{lost} items have a pattern index that names no output (there are \
+                     {outputs}) and were sent nowhere"
                 ));
             }
             Ok(())

@@ -2,9 +2,8 @@
 //! Tree Item and Tree Statistics.
 //!
 //! Merge and Entwine have a variable number of inputs, named by the graph
-//! (`inputs: ["D1", "D2", "D3"]`). Explode Tree should have one output per branch, and List
-//! Item one output per consecutive index; the runtime has no variable outputs yet, so Explode
-//! Tree has Grasshopper's two default outputs and warns about branches it cannot show.
+//! (`inputs: ["D1", "D2", "D3"]`); Explode Tree has a variable number of outputs, one per
+//! branch it shows (`outputs: ["0", "1", "2"]`), and warns about branches it cannot show.
 
 use locus_runtime::{DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, TreePath, Value};
 
@@ -23,9 +22,6 @@ pub const TREE_BRANCH: &str = "sets.tree_branch";
 pub const TREE_ITEM: &str = "sets.tree_item";
 /// Id of [`tree_statistics`].
 pub const TREE_STATISTICS: &str = "sets.tree_statistics";
-
-/// The number of outputs of Explode Tree (Grasshopper's default instance).
-pub const EXPLODE_OUTPUTS: usize = 2;
 
 /// Registers the stream and tree access nodes.
 pub fn register(registry: &mut NodeRegistry) {
@@ -122,39 +118,42 @@ pub fn entwine() -> NodeType {
 
 /// Explode Tree \[BANG!\]: each branch of a tree on an output of its own.
 pub fn explode_tree() -> NodeType {
-    let mut t = tree_node(EXPLODE_TREE, "Explode Tree", "BANG!")
+    tree_node(EXPLODE_TREE, "Explode Tree", "BANG!")
         .gh_guid("74cad441-2264-45fe-a57d-85034751208a")
         .description(
             "Extracts the branches of a tree: branch k (in path order) goes, at its path, to \
-             output k. The node has two outputs, Grasshopper's default; a tree with more \
-             branches gives a warning naming the branches left out (the runtime has no \
-             variable outputs yet). Outputs without a branch are empty.",
+             output k. The outputs are variable, 0, 1, … as Grasshopper names them (two by \
+             default; a graph adds one per branch it wants, as a Grasshopper user does by \
+             zooming in on the component); a tree with more branches than outputs gives a \
+             warning naming the branches left out. Outputs without a branch are empty.",
         )
-        .input(tree_port("Data", "D", "The tree to explode, of any type."));
-    for k in 0..EXPLODE_OUTPUTS {
-        t = t.output(tree_port(
-            &format!("Branch {k}"),
-            &k.to_string(),
-            &format!("The branch at index {k} of the tree, at its path."),
-        ));
-    }
-    t.solve(|s| {
-        let tree = s.tree(0)?;
-        let parts = tree.explode();
-        let n = parts.len();
-        for (k, part) in parts.into_iter().take(EXPLODE_OUTPUTS).enumerate() {
-            s.set_tree(k, part);
-        }
-        if n > EXPLODE_OUTPUTS {
-            s.warning(format!(
-                "the tree has {n} branches but the node has {EXPLODE_OUTPUTS} outputs: \
-                 branches {} to {} are left out",
-                tree.branches()[EXPLODE_OUTPUTS].0,
-                tree.branches()[n - 1].0
-            ));
-        }
-        Ok(())
-    })
+        .input(tree_port("Data", "D", "The tree to explode, of any type."))
+        .variable_outputs(
+            tree_port(
+                "Branch",
+                "0",
+                "The branch at this output's position (0, 1, …), at its path.",
+            ),
+            &["0", "1"],
+        )
+        .solve(|s| {
+            let outputs = s.output_count();
+            let tree = s.tree(0)?;
+            let parts = tree.explode();
+            let n = parts.len();
+            for (k, part) in parts.into_iter().take(outputs).enumerate() {
+                s.set_tree(k, part);
+            }
+            if n > outputs {
+                s.warning(format!(
+                    "the tree has {n} branches but the node has {outputs} outputs: \
+                     branches {} to {} are left out",
+                    tree.branches()[outputs].0,
+                    tree.branches()[n - 1].0
+                ));
+            }
+            Ok(())
+        })
 }
 
 /// Tree Branch \[Branch\]: the branch of a tree at a path.
@@ -350,6 +349,13 @@ mod tests {
         let r = NodeCall::new(&explode_tree()).input(tree("{4}:[1]")).run();
         assert_eq!(r.outputs[0].to_text(), "{4}:[1]");
         assert!(r.outputs[1].is_empty());
+        // As many outputs as the graph names: every branch shows.
+        let r = NodeCall::new(&explode_tree())
+            .input(tree("{0}:[1] {1}:[] {2}:[3] {3}:[4]"))
+            .output_names(&["0", "1", "2", "3"])
+            .run();
+        assert_clean(&r);
+        assert_eq!(r.outputs[3].to_text(), "{3}:[4]");
     }
 
     #[test]

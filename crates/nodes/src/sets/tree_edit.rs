@@ -22,9 +22,6 @@ pub const SPLIT_TREE: &str = "sets.split_tree";
 /// Id of [`match_tree`].
 pub const MATCH_TREE: &str = "sets.match_tree";
 
-/// The number of outputs of Stream Gate (Grasshopper's default instance).
-pub const GATE_OUTPUTS: usize = 2;
-
 /// Registers the tree choosing and cleaning nodes.
 pub fn register(registry: &mut NodeRegistry) {
     for t in [
@@ -104,9 +101,9 @@ pub fn stream_gate() -> NodeType {
         .gh_guid("71fcc052-6add-4d70-8d97-cfb37ea9d169")
         .description(
             "Sends the whole stream (tree) S to the output the gate index G names; the other \
-             outputs stay empty. The node has Grasshopper's default two outputs (the runtime \
-             has no variable outputs yet): a gate other than 0 or 1 sends the stream nowhere, \
-             with a warning.",
+             outputs stay empty. The outputs are variable, 0, 1, … as Grasshopper names them \
+             (two by default); a gate that names no output sends the stream nowhere, with a \
+             warning.",
         )
         .input(tree_port(
             "Stream",
@@ -119,18 +116,25 @@ pub fn stream_gate() -> NodeType {
                 .doc("The index of the output to send the stream to (its first item); default 0.")
                 .default_value(0_i64),
         )
-        .output(tree_port("Target 0", "0", "The stream when G is 0."))
-        .output(tree_port("Target 1", "1", "The stream when G is 1."))
+        .variable_outputs(
+            tree_port(
+                "Target",
+                "0",
+                "The stream when G is this output's position (0, 1, …).",
+            ),
+            &["0", "1"],
+        )
         .solve(|s| {
             let gate = gate_of(s.tree(1)?, "G")?.unwrap_or(0);
-            match usize::try_from(gate).ok().filter(|&g| g < GATE_OUTPUTS) {
+            let outputs = s.output_count();
+            match usize::try_from(gate).ok().filter(|&g| g < outputs) {
                 Some(g) => {
                     let stream = s.tree(0)?.clone();
                     s.set_tree(g, stream);
                 }
                 None => s.warning(format!(
-                    "gate {gate} names no output (there are {GATE_OUTPUTS}, 0 to {})",
-                    GATE_OUTPUTS - 1
+                    "gate {gate} names no output (there are {outputs}, 0 to {})",
+                    outputs.saturating_sub(1)
                 )),
             }
             Ok(())
@@ -449,6 +453,16 @@ mod tests {
             .run();
         assert_eq!(messages(&r, Level::Warning).len(), 1);
         assert!(r.outputs[0].is_empty() && r.outputs[1].is_empty());
+        // Outputs added on the node: the gate reaches them.
+        let r = NodeCall::new(&stream_gate())
+            .input(tree("{0}:[1, 2]"))
+            .input(DataTree::from_item(3_i64))
+            .output_names(&["0", "1", "2", "3"])
+            .run();
+        assert!(messages(&r, Level::Warning).is_empty());
+        assert_eq!(r.outputs.len(), 4);
+        assert_eq!(r.outputs[3], tree("{0}:[1, 2]"));
+        assert!((0..3).all(|k| r.outputs[k].is_empty()));
     }
 
     #[test]

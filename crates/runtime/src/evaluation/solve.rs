@@ -433,6 +433,11 @@ impl<'a> Solve<'a> {
     pub fn output_port(&self, output: usize) -> Option<&Port> {
         self.output_ports.get(output)
     }
+
+    /// How many outputs the node has (a node with variable outputs has those its graph names).
+    pub fn output_count(&self) -> usize {
+        self.output_ports.len()
+    }
 }
 
 fn replace_last(branch: &mut Branch, value: Value) {
