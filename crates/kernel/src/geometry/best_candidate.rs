@@ -238,11 +238,12 @@ pub fn best_candidate_points(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    /// A small linear congruential generator, for tests.
-    fn lcg(seed: u64) -> impl FnMut() -> f64 {
+    /// A small linear congruential generator, for the tests of this module and of
+    /// `mesh::populate`.
+    pub(crate) fn lcg(seed: u64) -> impl FnMut() -> f64 {
         let mut state = seed;
         move || {
             state = state

@@ -220,17 +220,8 @@ fn barycentric(r1: f64, r2: f64) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::best_candidate::tests::lcg;
     use crate::{Circle, Plane, Sphere};
-
-    fn lcg(seed: u64) -> impl FnMut() -> f64 {
-        let mut state = seed;
-        move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 11) as f64 / (1_u64 << 53) as f64
-        }
-    }
 
     fn nearest_neighbour_distances(points: &[Point3]) -> Vec<f64> {
         points
