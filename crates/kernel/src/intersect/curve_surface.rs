@@ -325,7 +325,7 @@ fn descend(
     {
         return;
     }
-    let flat_s = patch.is_flat(FLATNESS, 0.25 * tolerance);
+    let flat_s = patch.is_flat(slab.as_ref(), FLATNESS, 0.25 * tolerance);
     let (size_c, size_s) = (diagonal(&box_c), diagonal(&box_s));
     let piece_is_larger = size_c > 2.0 * size_s && size_c > tolerance;
     let exhausted = depth >= MAX_DEPTH || *leaves >= MAX_LEAVES;

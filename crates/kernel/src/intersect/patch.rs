@@ -187,8 +187,9 @@ impl Patch {
     /// (`relative`) or absolutely (`absolute`): whether the patch is nearly flat, where a line
     /// meets it at most once and Newton's method converges from a planar estimate. A bilinear
     /// patch's net is its corners, but when it is twisted it is a saddle that a line can cross
-    /// twice, so the distance from the plane counts too.
-    pub(crate) fn is_flat(&self, relative: f64, absolute: f64) -> bool {
+    /// twice, so the distance from the plane counts too. `slab` is the patch's
+    /// [`slab`](Self::slab), which the caller has already computed.
+    pub(crate) fn is_flat(&self, slab: Option<&Slab>, relative: f64, absolute: f64) -> bool {
         let (nu, nv) = (self.nu, self.nv);
         let c = [
             self.point(0, 0),
@@ -219,7 +220,7 @@ impl Patch {
         // Half the slab: the distance from its middle plane. Diagonals along one line (a patch
         // collapsed to a curve or a point) give no plane, and then only a patch within
         // `absolute` of its first corner is flat.
-        deviation = deviation.max(match self.slab() {
+        deviation = deviation.max(match slab {
             Some(slab) => 0.5 * slab.thickness(),
             None => (0..nu)
                 .flat_map(|i| (0..nv).map(move |j| (i, j)))
