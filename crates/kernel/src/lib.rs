@@ -69,6 +69,7 @@ pub use crate::curve::nurbs::basis;
 pub use crate::curve::nurbs::interpolate::{EndTangents, KnotStyle};
 pub use crate::curve::offset::{CurveOffset, MAX_OFFSET_SAMPLES, OffsetCorners};
 pub use crate::curve::polyline::Polyline;
+pub use crate::curve::region::{MAX_REGION_CURVES, RegionOperation, SIDE_OFFSET};
 pub use crate::error::{Error, Result};
 pub use crate::geometry::best_candidate::{
     BEST_CANDIDATES, best_candidate_points, best_candidate_samples,

@@ -111,6 +111,9 @@
 //!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
 //! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\].
+//! - Shape ([`curve::regions`]): Region Union \[RUnion\], Region Intersection \[RInt\],
+//!   Region Difference \[RDiff\] (booleans of planar regions, by the kernel's
+//!   `Curve::region_boolean`).
 //!
 //! **Script** ([`script`])
 //! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python

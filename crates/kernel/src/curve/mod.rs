@@ -33,6 +33,7 @@ pub(crate) mod measure;
 pub(crate) mod nurbs;
 pub(crate) mod offset;
 pub(crate) mod polyline;
+pub(crate) mod region;
 pub(crate) mod split;
 
 use std::f64::consts::{FRAC_PI_2, TAU};
