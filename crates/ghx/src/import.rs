@@ -234,6 +234,20 @@ impl Mapper<'_> {
             Some(Special::Furniture) => {
                 self.report.objects.push((r, Outcome::Ignored));
             }
+            Some(Special::Timer) => {
+                self.diag(
+                    Level::Remark,
+                    "ignored-timer",
+                    format!(
+                        "{r} triggers new solutions on a clock; a headless run solves once: \
+                         ignored"
+                    ),
+                    Some(r.clone()),
+                    None,
+                    None,
+                );
+                self.report.objects.push((r, Outcome::Ignored));
+            }
             Some(Special::Display) => {
                 self.diag(
                     Level::Remark,

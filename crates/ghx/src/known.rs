@@ -27,6 +27,9 @@ pub enum Special {
     PassThrough,
     /// Shows data on the canvas or in the viewport only: dropped with a remark.
     Display,
+    /// Timer: triggers new solutions on a clock; a headless run solves once, so it is ignored
+    /// with a remark.
+    Timer,
     /// Canvas furniture (groups, scribbles, sketches): ignored; groups are read for the
     /// `RH_IN:`/`RH_OUT:` names.
     Furniture,
@@ -173,6 +176,11 @@ pub const KNOWN: &[(&str, &str, Special)] = &[
         "11e95a7b-1e2c-4b66-bd95-fcad51f8662a",
         "Vector Display Ex",
         Special::Display,
+    ),
+    (
+        "5a2b0735-ba98-4b7d-a7d3-c1dfc04475ad",
+        "Timer",
+        Special::Timer,
     ),
     (GROUP, "Group", Special::Furniture),
     (

@@ -70,6 +70,7 @@ fn treatment(s: Special) -> &'static str {
         Special::PassThrough => "pass-through: wires are joined across it",
         Special::Display => "dropped with a remark (display only)",
         Special::Furniture => "ignored (groups are read for RH_IN/RH_OUT)",
+        Special::Timer => "ignored with a remark (a headless run solves once)",
         Special::Cluster => "a sub-graph node with an inline graph of its objects",
         Special::HopsGet(_) => "named input (a parameter node)",
         Special::HopsCall => "unsupported: calls a remote definition",

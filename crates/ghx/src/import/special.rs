@@ -418,6 +418,69 @@ mod tests {
         }
     }
 
+    /// A Timer is ignored with a remark; a Data Recorder and a File Path parameter map onto
+    /// their nodes, and the definition runs whole.
+    #[test]
+    fn timers_are_ignored_and_recorders_and_file_paths_map() {
+        let mut registry = NodeRegistry::new();
+        locus_nodes::register(&mut registry);
+        let guid = |id: &str| registry.get(id).expect(id).gh_guids[0].clone();
+        let doc = GhDocument {
+            objects: vec![
+                GhObject {
+                    type_guid: "5a2b0735-ba98-4b7d-a7d3-c1dfc04475ad".to_owned(),
+                    type_name: "Timer".to_owned(),
+                    instance: "timer".to_owned(),
+                    nickname: "Timer".to_owned(),
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: guid("params.file_path"),
+                    type_name: "File Path".to_owned(),
+                    instance: "path".to_owned(),
+                    nickname: "Path".to_owned(),
+                    inputs: vec![param("path-in", "Path", &[])],
+                    outputs: vec![param("path", "Path", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: guid("params.data_recorder"),
+                    type_name: "Data Recorder".to_owned(),
+                    instance: "rec".to_owned(),
+                    nickname: "Rec".to_owned(),
+                    inputs: vec![param("rec-in", "Rec", &["path"])],
+                    outputs: vec![param("rec", "Rec", &[])],
+                    ..GhObject::default()
+                },
+            ],
+            ..GhDocument::default()
+        };
+        let import = import_document(&doc, &registry, &Limits::default());
+        let outcomes: Vec<&Outcome> = import.report.objects.iter().map(|(_, o)| o).collect();
+        assert!(
+            matches!(
+                outcomes[..],
+                [Outcome::Ignored, Outcome::Mapped(_), Outcome::Mapped(_)]
+            ),
+            "{outcomes:?}"
+        );
+        assert!(import.report.runs_whole());
+        let timer = &import.report.diagnostics[0];
+        assert_eq!(
+            (timer.severity, timer.code),
+            (Level::Remark, "ignored-timer")
+        );
+        assert!(timer.message.contains("Timer"), "{}", timer.message);
+        let types: Vec<&str> = import
+            .graph
+            .nodes
+            .iter()
+            .map(|n| n.node_type.as_str())
+            .collect();
+        assert_eq!(types, ["params.file_path", "params.data_recorder"]);
+        assert_eq!(import.graph.wires.len(), 1);
+    }
+
     /// A cluster "twice" whose document adds its input to itself: x → Addition(A = x, B = x)
     /// → y.
     #[test]

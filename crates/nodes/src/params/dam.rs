@@ -1,18 +1,51 @@
-//! Data Dam: Grasshopper's valve that holds data back until the user releases it (or a delay
-//! passes), so that a slow part of a definition does not recompute on every slider move.
+//! The parameters that hold data across Grasshopper's solutions: Data Dam, the valve that holds
+//! data back until the user releases it (or a delay passes) so that a slow part of a
+//! definition does not recompute on every slider move, and Data Recorder, which appends each
+//! solution's data to what it recorded before.
 //!
-//! locus evaluates a graph in one pass with nobody at a canvas to release anything, so a dam
-//! passes each input's tree to the output of the same position at once, unchanged. The delay
-//! a file stores is not read.
+//! locus evaluates a graph in one pass with nobody at a canvas, so both pass their data on at
+//! once, unchanged: a dam has nothing to wait for (the delay a file stores is not read) and a
+//! recorder records the one solution there is (its record limit is not read).
 
 use locus_runtime::{DataType, NodeType, Port};
 
 /// Id of [`data_dam`].
 pub const DATA_DAM: &str = "params.data_dam";
+/// Id of [`data_recorder`].
+pub const DATA_RECORDER: &str = "params.data_recorder";
 
-/// Registers Data Dam.
+/// Registers Data Dam and Data Recorder.
 pub fn register(registry: &mut locus_runtime::NodeRegistry) {
     registry.register(data_dam());
+    registry.register(data_recorder());
+}
+
+/// Data Recorder \[Rec\]: the data of the one solution a headless run makes.
+pub fn data_recorder() -> NodeType {
+    NodeType::new(DATA_RECORDER, "Data Recorder", "Rec", "Params")
+        .subcategory("Util")
+        .gh_guid("401aa475-997a-4139-991d-f980ffdcf908")
+        .description(
+            "Records data. In Grasshopper a recorder appends every solution's data to what it \
+             recorded before (up to its limit), branch by branch; a headless run makes one \
+             solution, so the record is that solution's data: the tree passes through \
+             unchanged (paths, empty branches and nulls included).",
+        )
+        .input(
+            Port::new("Data Recorder", "Rec", DataType::Generic)
+                .tree()
+                .doc("The data to record, of any type."),
+        )
+        .output(
+            Port::new("Data Recorder", "Rec", DataType::Generic)
+                .tree()
+                .doc("The recorded data: this solution's."),
+        )
+        .solve(|s| {
+            let tree = s.tree(0)?.clone();
+            s.set_tree(0, tree);
+            Ok(())
+        })
 }
 
 /// Data Dam \[Dam\]: each input's data passed on to its output.
@@ -65,6 +98,17 @@ mod tests {
 
     fn tree(text: &str) -> DataTree {
         DataTree::parse_text(text, DataType::Generic).unwrap()
+    }
+
+    #[test]
+    fn a_recorder_records_the_one_solution() {
+        let a = tree("{0;1}:[1, null] {0;2}:[] {3}:[\"x\"]");
+        let out = NodeCall::new(&data_recorder()).input(a.clone()).run();
+        assert!(out.messages.is_empty(), "{:?}", out.messages);
+        assert_eq!(out.outputs[0].to_text(), a.to_text());
+        // Nothing to record: the input warns that it collected no data.
+        let out = NodeCall::new(&data_recorder()).skip_input().run();
+        assert!(!out.messages.is_empty());
     }
 
     #[test]

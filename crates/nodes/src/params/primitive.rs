@@ -1,4 +1,5 @@
-//! Params › Primitive: Number, Integer, Boolean, Text, Domain and Domain² parameters.
+//! Params › Primitive: Number, Integer, Boolean, Text, File Path, Domain and Domain²
+//! parameters.
 //!
 //! Each has one list-access input and one list output of the same name and nickname; the
 //! graph tells them apart by direction (`Num` as an input is the values coming in, `Num` as
@@ -14,6 +15,8 @@ pub const INTEGER: &str = "params.integer";
 pub const BOOLEAN: &str = "params.boolean";
 /// Id of [`text`].
 pub const TEXT: &str = "params.text";
+/// Id of [`file_path`].
+pub const FILE_PATH: &str = "params.file_path";
 /// Id of [`domain`].
 pub const DOMAIN: &str = "params.domain";
 /// Id of [`domain2`].
@@ -21,7 +24,15 @@ pub const DOMAIN2: &str = "params.domain2";
 
 /// Registers the primitive parameters.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [number(), integer(), boolean(), text(), domain(), domain2()] {
+    for t in [
+        number(),
+        integer(),
+        boolean(),
+        text(),
+        file_path(),
+        domain(),
+        domain2(),
+    ] {
         registry.register(t);
     }
 }
@@ -111,6 +122,20 @@ pub fn text() -> NodeType {
         "text, or any value, which is written as text",
     )
     .gh_guid("3ede854e-c753-40eb-84cb-b48008f14fd4")
+}
+
+/// File Path \[Path\]: a collection of file paths, as text.
+pub fn file_path() -> NodeType {
+    parameter(
+        FILE_PATH,
+        "File Path",
+        "Path",
+        DataType::Text,
+        "Contains a collection of file paths, as text: no file is opened or checked (a path \
+         from a Grasshopper file names a file on the machine that saved it).",
+        "paths as text, or any value, which is written as text",
+    )
+    .gh_guid("06953bda-1d37-4d58-9b38-4b3c74e54c8f")
 }
 
 /// Domain \[Domain\]: a collection of numeric domains.
