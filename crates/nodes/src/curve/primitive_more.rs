@@ -4,13 +4,14 @@
 //! The constructions are the kernel's (`Circle::from_three_points`, `Arc::from_three_points`,
 //! `Arc::from_start_tangent_end`, `Circle::from_center_normal`), which reject degenerate input
 //! (collinear points, zero vectors, non-finite numbers) with a reason. Polygon and Rectangle
-//! make closed polylines; their rounded corners (a fillet radius) need curve filleting, which
-//! the kernel does not have yet, so a positive radius is an error.
+//! make closed polylines; with a corner (fillet) radius above 0 each corner is rounded by the
+//! tangent arc of that radius (`Curve::fillet_corners`), which makes the closed curve one NURBS
+//! curve of lines and arcs (Rhino's is a polycurve of the same pieces).
 
 use std::f64::consts::TAU;
 
 use locus_kernel::{Arc, Circle, Curve, Interval, Line, Plane, Point3, Polyline, Vector3};
-use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
+use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Solve};
 
 use super::curve_input;
 use crate::maths::sequence::MAX_SEQUENCE_LENGTH;
@@ -200,14 +201,47 @@ pub fn arc_sed() -> NodeType {
         })
 }
 
-fn fillet_unsupported(r: f64) -> Result<(), NodeError> {
-    if r.is_nan() || r > 0.0 {
+/// Sets outputs 0 and 1 to the closed polyline with its corners rounded by tangent arcs of
+/// radius `r` (the polyline itself for 0) and its length. A radius above `largest` (the
+/// largest whose arcs fit the shape's sides) is reduced to it, with a warning; a corner an arc
+/// still does not fit stays sharp, with a warning. `port` names the radius input in messages.
+pub(crate) fn set_rounded(
+    s: &mut Solve<'_>,
+    poly: Polyline,
+    r: f64,
+    largest: f64,
+    port: &str,
+) -> Result<(), NodeError> {
+    if !(r.is_finite() && r >= 0.0) {
         return Err(NodeError(format!(
-            "a corner radius ({r}) needs curve filleting, which locus does not have yet: use 0"
+            "the corner radius {port} must be 0 or more, not {r}"
         )));
     }
+    let r = if r > largest {
+        s.warning(format!(
+            "the corner radius {port} = {r} does not fit the sides: the largest that does, \
+             {largest}, is used"
+        ));
+        largest
+    } else {
+        r
+    };
+    if r == 0.0 {
+        let length = poly.length();
+        s.set(0, curve_of(poly));
+        s.set(1, length);
+        return Ok(());
+    }
+    let size = poly.length().max(1.0);
+    let rounded = Curve::from(poly).fillet_corners(r, FILLET_TOLERANCE * size)?;
+    let length = rounded.curve.length();
+    super::util::set_fillet(s, rounded);
+    s.set(1, length);
     Ok(())
 }
+
+/// How closely a rounded corner's arc meets the sides, relative to the outline's length.
+const FILLET_TOLERANCE: f64 = 1e-10;
 
 pub(crate) fn curve_of(p: Polyline) -> Shared<Curve> {
     Shared::new(Curve::from(p))
@@ -221,7 +255,10 @@ pub fn polygon() -> NodeType {
             "Creates the regular polygon with S sides inscribed in the circle of radius R about \
              the origin of plane P: its first corner is on the plane's x axis and the corners \
              turn towards its y axis. It is a closed polyline. S must be at least 3; R must be \
-             positive; a fillet radius Rf above 0 is not supported yet and is an error.",
+             positive. With a fillet radius Rf above 0 each corner is rounded by the tangent \
+             arc of radius Rf (up to the inscribed circle's radius R cos(π/S), where the \
+             polygon becomes that circle; a larger Rf is reduced to it, with a warning); the \
+             polygon is then one closed curve of lines and arcs.",
         )
         .input(
             Port::new("Plane", "P", DataType::Plane)
@@ -242,16 +279,19 @@ pub fn polygon() -> NodeType {
         )
         .input(
             Port::new("Fillet Radius", "Rf", DataType::Number)
-                .doc("The corner radius; only 0 (sharp corners) is supported; default 0.")
+                .doc("The corner radius; 0 (the default) for sharp corners.")
                 .default_value(0.0),
         )
-        .output(Port::new("Polygon", "P", DataType::Curve).doc("The polygon, a closed polyline."))
+        .output(
+            Port::new("Polygon", "P", DataType::Curve)
+                .doc("The polygon: a closed polyline, or with rounded corners a closed curve."),
+        )
         .output(Port::new("Length", "L", DataType::Number).doc("The perimeter."))
         .solve(|s| {
             let plane = *s.item::<Plane>(0)?;
             let r = *s.item::<f64>(1)?;
             let n = *s.item::<i64>(2)?;
-            fillet_unsupported(*s.item::<f64>(3)?)?;
+            let fillet = *s.item::<f64>(3)?;
             let sides = usize::try_from(n)
                 .ok()
                 .filter(|n| (3..=MAX_SEQUENCE_LENGTH).contains(n))
@@ -265,11 +305,8 @@ pub fn polygon() -> NodeType {
                 .map(|k| circle.point_at(TAU * k as f64 / sides as f64))
                 .collect();
             pts.push(pts[0]);
-            let poly = Polyline::new(pts)?;
-            let length = poly.length();
-            s.set(0, curve_of(poly));
-            s.set(1, length);
-            Ok(())
+            let inscribed = r.abs() * (std::f64::consts::PI / sides as f64).cos();
+            set_rounded(s, Polyline::new(pts)?, fillet, inscribed, "Rf")
         })
 }
 
@@ -281,8 +318,10 @@ pub fn rectangle() -> NodeType {
             "Creates the rectangle on plane P spanning the domains X and Y along the plane's \
              axes (a number x is the domain 0 to x; the defaults are 0 to 1). It is a closed \
              polyline from the corner (X.t0, Y.t0) towards +X; decreasing domains are made \
-             increasing. A domain of zero length is an error; a corner radius R above 0 is not \
-             supported yet and is an error.",
+             increasing. A domain of zero length is an error. With a corner radius R above 0 \
+             each corner is rounded by the tangent arc of radius R (up to half the shorter \
+             side; a larger radius is reduced to it, with a warning), and the rectangle is one \
+             closed curve of lines and arcs.",
         )
         .input(
             Port::new("Plane", "P", DataType::Plane)
@@ -301,18 +340,18 @@ pub fn rectangle() -> NodeType {
         )
         .input(
             Port::new("Radius", "R", DataType::Number)
-                .doc("The corner radius; only 0 (sharp corners) is supported; default 0.")
+                .doc("The corner radius; 0 (the default) for sharp corners.")
                 .default_value(0.0),
         )
-        .output(
-            Port::new("Rectangle", "R", DataType::Curve)
-                .doc("The rectangle, a closed polyline of four sides."),
-        )
+        .output(Port::new("Rectangle", "R", DataType::Curve).doc(
+            "The rectangle: a closed polyline of four sides, or with rounded corners a \
+                 closed curve.",
+        ))
         .output(Port::new("Length", "L", DataType::Number).doc("The perimeter."))
         .solve(|s| {
             let plane = *s.item::<Plane>(0)?;
             let (x, y) = (*s.item::<Interval>(1)?, *s.item::<Interval>(2)?);
-            fillet_unsupported(*s.item::<f64>(3)?)?;
+            let radius = *s.item::<f64>(3)?;
             if !plane.is_valid() {
                 return Err(NodeError("plane P is not valid".into()));
             }
@@ -334,10 +373,8 @@ pub fn rectangle() -> NodeType {
                 at(x0, y1),
                 at(x0, y0),
             ])?;
-            let length = poly.length();
-            s.set(0, curve_of(poly));
-            s.set(1, length);
-            Ok(())
+            let half = 0.5 * (x1 - x0).min(y1 - y0);
+            set_rounded(s, poly, radius, half, "R")
         })
 }
 
@@ -362,6 +399,8 @@ pub fn curve_middle() -> NodeType {
 
 #[cfg(test)]
 mod tests {
+    use std::f64::consts::PI;
+
     use locus_runtime::{DataTree, Level, NodeCall, Value};
 
     use super::*;
@@ -486,7 +525,7 @@ mod tests {
                 .skip_input()
                 .skip_input()
                 .skip_input()
-                .input(DataTree::from_item(0.5))
+                .input(DataTree::from_item(-0.5))
                 .run(),
             NodeCall::new(&rectangle())
                 .skip_input()
@@ -500,6 +539,42 @@ mod tests {
                 .run(),
         ] {
             assert_eq!(messages(&bad, Level::Error).len(), 1, "{:?}", bad.messages);
+        }
+    }
+
+    /// A hexagon of radius 1 with corners of radius 0.2: each corner turns by π/3, so it trades
+    /// 2 · 0.2 tan(π/6) of side for an arc, and the arcs make one full turn: the length is
+    /// 6 − 12 · 0.2 tan(π/6) + 2π · 0.2. A fillet radius above the inscribed radius cos(π/6)
+    /// is reduced to it, which makes the inscribed circle.
+    #[test]
+    fn rounded_polygon() {
+        let run = |fillet: f64| {
+            NodeCall::new(&polygon())
+                .skip_input()
+                .skip_input()
+                .skip_input()
+                .input(DataTree::from_item(fillet))
+                .run()
+        };
+        let r = run(0.2);
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let want = 6.0 - 12.0 * 0.2 * (PI / 6.0).tan() + TAU * 0.2;
+        assert!((only::<f64>(&r, 1) - want).abs() < 1e-12);
+        let r = run(2.0);
+        let inscribed = (PI / 6.0).cos();
+        assert!(
+            (only::<f64>(&r, 1) - TAU * inscribed).abs() < 1e-9,
+            "{}",
+            only::<f64>(&r, 1)
+        );
+        assert_eq!(r.messages.len(), 1, "{:?}", r.messages);
+        let c = only::<Shared<Curve>>(&r, 0);
+        for k in 0..100 {
+            let q = c.point_at(c.domain().t0 + c.domain().length() * k as f64 / 100.0);
+            assert!(
+                ((q - Point3::ORIGIN).length() - inscribed).abs() < 1e-9,
+                "{q:?}"
+            );
         }
     }
 

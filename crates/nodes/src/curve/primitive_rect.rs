@@ -1,13 +1,13 @@
 //! Curve › Primitive, rectangles from points: Rectangle 2Pt and Rectangle 3Pt.
 //!
 //! Both make closed polylines of four sides, as the Rectangle node does (the runtime has no
-//! rectangle value; the Rectangle parameter checks such polylines). Rounded corners need curve
-//! filleting, which the kernel does not have yet, so a positive radius is an error.
+//! rectangle value; the Rectangle parameter checks such polylines); a corner radius above 0
+//! rounds the corners with tangent arcs, as the Rectangle node does.
 
 use locus_kernel::{Plane, Point3, Polyline};
 use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port};
 
-use super::primitive_more::curve_of;
+use super::primitive_more::{curve_of, set_rounded};
 
 /// Id of [`rectangle_2pt`].
 pub const RECTANGLE_2PT: &str = "curve.rectangle_2pt";
@@ -69,15 +69,6 @@ pub fn rectangle_from_corners(plane: &Plane, a: Point3, b: Point3) -> Result<Pol
     closed(corner, plane.x_axis * (x1 - x0), plane.y_axis * (y1 - y0))
 }
 
-fn fillet_unsupported(r: f64) -> Result<(), NodeError> {
-    if r.is_nan() || r > 0.0 {
-        return Err(NodeError(format!(
-            "a corner radius ({r}) needs curve filleting, which locus does not have yet: use 0"
-        )));
-    }
-    Ok(())
-}
-
 /// Rectangle 2Pt \[Rec 2Pt\]: a rectangle from two opposite corners.
 pub fn rectangle_2pt() -> NodeType {
     outputs(
@@ -87,8 +78,9 @@ pub fn rectangle_2pt() -> NodeType {
                 "Creates a rectangle on a plane from two opposite corners: the points are \
                  projected onto the plane and the rectangle spans them along its axes, from \
                  the corner of least plane coordinates towards +x. Corners sharing an x or y \
-                 coordinate in the plane are an error; a corner radius R above 0 is not \
-                 supported yet and is an error.",
+                 coordinate in the plane are an error. A corner radius R above 0 rounds each \
+                 corner with the tangent arc of that radius (up to half the shorter side; a \
+                 larger one is reduced to it, with a warning).",
             )
             .input(
                 Port::new("Plane", "P", DataType::Plane)
@@ -107,19 +99,21 @@ pub fn rectangle_2pt() -> NodeType {
             )
             .input(
                 Port::new("Radius", "R", DataType::Number)
-                    .doc("The corner radius; only 0 (sharp corners) is supported; default 0.")
+                    .doc("The corner radius; 0 (the default) for sharp corners.")
                     .default_value(0.0),
             ),
     )
     .solve(|s| {
         let plane = *s.item::<Plane>(0)?;
         let (a, b) = (*s.item::<Point3>(1)?, *s.item::<Point3>(2)?);
-        fillet_unsupported(*s.item::<f64>(3)?)?;
+        let radius = *s.item::<f64>(3)?;
         let poly = rectangle_from_corners(&plane, a, b)?;
-        let length = poly.length();
-        s.set(0, curve_of(poly));
-        s.set(1, length);
-        Ok(())
+        let sides = poly.points();
+        let half = 0.5
+            * (sides[1] - sides[0])
+                .length()
+                .min((sides[2] - sides[1]).length());
+        set_rounded(s, poly, radius, half, "R")
     })
 }
 
@@ -219,9 +213,58 @@ mod tests {
             .skip_input()
             .skip_input()
             .skip_input()
-            .input(DataTree::from_item(0.5))
+            .input(DataTree::from_item(-0.5))
             .run();
-        assert_error(&r, "corner radius");
+        assert_error(&r, "corner radius R");
+    }
+
+    /// A 2 × 1 rectangle with corners of radius 0.25: each corner trades 2r of straight side
+    /// for a quarter circle, so the length is 6 − 8r + 2πr; every point lies on the rounded
+    /// outline. A radius above half the shorter side is reduced to it (a stadium: two half
+    /// circles and two sides of length 1), with a warning.
+    #[test]
+    fn rounded_rectangle_2pt() {
+        let run = |radius: f64| {
+            NodeCall::new(&rectangle_2pt())
+                .skip_input()
+                .input(DataTree::from_item(p(0.0, 0.0, 0.0)))
+                .input(DataTree::from_item(p(2.0, 1.0, 0.0)))
+                .input(DataTree::from_item(radius))
+                .run()
+        };
+        let r = run(0.25);
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        let length = only::<f64>(&r, 1);
+        let want = 6.0 - 8.0 * 0.25 + std::f64::consts::TAU * 0.25;
+        assert!((length - want).abs() < 1e-12, "{length} {want}");
+        let curve = only::<Shared<Curve>>(&r, 0);
+        assert!(curve.is_closed());
+        for k in 0..200 {
+            let d = curve.domain();
+            let q = curve.point_at(d.t0 + d.length() * k as f64 / 200.0);
+            // Distance from the inner rectangle [0.25, 1.75] × [0.25, 0.75] is the radius.
+            let dx = (q.x - q.x.clamp(0.25, 1.75)).abs();
+            let dy = (q.y - q.y.clamp(0.25, 0.75)).abs();
+            let off = if dx > 0.0 && dy > 0.0 {
+                dx.hypot(dy)
+            } else {
+                dx.max(dy)
+            };
+            assert!((off - 0.25).abs() < 1e-12, "{q:?} {off}");
+        }
+        let r = run(0.6);
+        let want = 2.0 + std::f64::consts::PI;
+        assert!(
+            (only::<f64>(&r, 1) - want).abs() < 1e-12,
+            "{}",
+            only::<f64>(&r, 1)
+        );
+        assert_eq!(r.messages.len(), 1, "{:?}", r.messages);
+        assert!(
+            r.messages[0].text.contains("0.5, is used"),
+            "{:?}",
+            r.messages
+        );
     }
 
     #[test]

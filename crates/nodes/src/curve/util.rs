@@ -163,7 +163,7 @@ pub fn fillet() -> NodeType {
 }
 
 /// Writes a fillet's curve to output 0, with a warning for each corner left sharp.
-fn set_fillet(s: &mut locus_runtime::Solve<'_>, res: locus_kernel::CurveFillet) {
+pub(crate) fn set_fillet(s: &mut locus_runtime::Solve<'_>, res: locus_kernel::CurveFillet) {
     for corner in &res.sharp {
         let p = corner.point;
         s.warning(format!(
