@@ -93,7 +93,9 @@
 //! **Surface** ([`surface`])
 //! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Cylinder \[Cyl\], Cone, Plane Surface
 //!   \[PlaneSrf\].
-//! - Freeform ([`surface::freeform`]): Surface From Points \[SrfGrid\].
+//! - Freeform ([`surface::freeform`]): Surface From Points \[SrfGrid\]; ([`surface::lofting`])
+//!   Ruled Surface \[RuleSrf\], Loft (normal, loose, tight, straight, uniform; closed; seams
+//!   adjusted), Loft Options \[Loft Opt\], Revolution \[RevSrf\].
 //! - Analysis ([`surface::analysis`]): Evaluate Surface \[EvalSrf\], Surface Closest Point
 //!   \[Srf CP\], Principal Curvature \[Curvature\], Surface Curvature \[Curvature\].
 //! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].

@@ -2,6 +2,7 @@
 //! bounded by polylines.
 
 use crate::brep::{Brep, BrepEdge, BrepFace, BrepLoop, BrepTrim, BrepVertex, LoopKind, TrimKind};
+use crate::curve::loop_plane::fit_plane;
 use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 use crate::{
     Circle, Cone, Cylinder, Error, Interval, Line, NurbsCurve, NurbsSurface, OrientedBox, Plane,
@@ -602,30 +603,6 @@ fn clean_polygon(points: &[Point3]) -> Result<Vec<Point3>> {
         });
     }
     Ok(out)
-}
-
-/// The plane of a polygon: Newell's normal (oriented by the polygon's winding), origin at the
-/// first point, x axis along the first segment.
-pub(crate) fn fit_plane(points: &[Point3]) -> Result<Plane> {
-    let n = points.len();
-    let mut normal = Vector3::ZERO;
-    let c = points[0];
-    for i in 0..n {
-        let a = points[i] - c;
-        let b = points[(i + 1) % n] - c;
-        normal += a.cross(b);
-    }
-    let z = normal.try_normalize().ok_or(Error::Collinear)?;
-    let first = points[1] - points[0];
-    let x = (first - z * first.dot(z))
-        .try_normalize()
-        .ok_or(Error::Collinear)?;
-    Ok(Plane {
-        origin: points[0],
-        x_axis: x,
-        y_axis: z.cross(x),
-        z_axis: z,
-    })
 }
 
 /// The signed area of a polygon in the plane (positive when counter-clockwise).

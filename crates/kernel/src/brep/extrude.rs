@@ -7,7 +7,8 @@
 //! solid, as Grasshopper's Extrude does; extruded to a point it is capped at its base.
 //! A B-rep is extruded by joining its faces, a moved copy, and the sweep of every naked edge.
 
-use crate::brep::planar::{loop_plane, split_at_kinks};
+use crate::brep::planar::split_at_kinks;
+use crate::curve::loop_plane::loop_plane;
 use crate::{Brep, Curve, EdgeKind, Error, NurbsSurface, Point3, Result, Transform, Vector3};
 
 /// The smallest sine of the angle between an extrusion direction and a closed curve's plane

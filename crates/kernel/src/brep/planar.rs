@@ -7,39 +7,19 @@
 //! disc bounded by a circle has exactly the disc's area. The plane is fitted through points
 //! sampled along the outer loop (Newell's normal, so that the outer loop runs
 //! counter-clockwise); every sample of every loop must lie within the tolerance of it.
-//! Containment and crossing tests use the sampled polygons, [`SAMPLES_PER_SPAN`] points per
+//! Containment and crossing tests use the sampled polygons, [`crate::curve::loop_plane::SAMPLES_PER_SPAN`] points per
 //! span of each curve.
 
-use crate::brep::builders::{
-    Builder, check_no_crossings, fit_plane, point_in_polygon, signed_area,
-};
+use crate::brep::builders::{Builder, check_no_crossings, point_in_polygon, signed_area};
 use crate::brep::{Brep, LoopKind};
+use crate::curve::loop_plane::{check_in_plane, loop_plane, loop_samples};
 use crate::{Curve, Error, Interval, NurbsCurve, NurbsSurface, Plane, Point3, Result, Transform};
 
-/// Points sampled per span of a boundary curve for the plane fit and the containment and
-/// crossing tests.
-pub const SAMPLES_PER_SPAN: usize = 8;
-/// The most samples taken along one boundary curve.
-const MAX_SAMPLES_PER_CURVE: usize = 4096;
 /// The most boundary curves [`Brep::planar_regions`] takes.
 pub const MAX_BOUNDARY_CURVES: usize = 10_000;
 
 /// The boundary curves [`Brep::planar_regions`] left out: each curve's index and why.
 pub type FailedBoundaries = Vec<(usize, Error)>;
-
-/// Points along the curve from its start, without its end point.
-fn samples(curve: &NurbsCurve) -> Vec<Point3> {
-    let n = (curve.span_count() * SAMPLES_PER_SPAN).clamp(SAMPLES_PER_SPAN, MAX_SAMPLES_PER_CURVE);
-    let d = curve.domain();
-    (0..n)
-        .map(|k| curve.point_at(d.parameter_at(k as f64 / n as f64)))
-        .collect()
-}
-
-/// The samples of a loop of curves, in order.
-fn loop_samples(curves: &[NurbsCurve]) -> Vec<Point3> {
-    curves.iter().flat_map(samples).collect()
-}
 
 /// The curve split at its kinks (angles above [`crate::KINK_ANGLE_TOLERANCE`]), as NURBS
 /// curves: the pieces Rhino makes edges of (one per polyline segment). A closed curve is also
@@ -60,33 +40,6 @@ pub(crate) fn split_at_kinks(curve: &Curve) -> Result<Vec<NurbsCurve>> {
         .windows(2)
         .map(|w| Ok(curve.trim(Interval::new(w[0], w[1]))?.to_nurbs()))
         .collect()
-}
-
-/// The plane of a closed loop of curves, if every sample lies within `tolerance` of it.
-pub(crate) fn loop_plane(curves: &[NurbsCurve], tolerance: f64) -> Result<Plane> {
-    let points = loop_samples(curves);
-    if points.iter().any(|p| !p.is_finite()) {
-        return Err(Error::NotFinite {
-            what: "boundary curve",
-        });
-    }
-    let plane = fit_plane(&points)?;
-    check_in_plane(&plane, &points, tolerance)?;
-    Ok(plane)
-}
-
-fn check_in_plane(plane: &Plane, points: &[Point3], tolerance: f64) -> Result<()> {
-    let worst = points
-        .iter()
-        .map(|&p| plane.distance_to(p))
-        .fold(0.0f64, f64::max);
-    if worst > tolerance {
-        return Err(Error::InvalidInput(format!(
-            "the boundary is not planar: a point lies {worst} from its plane, more than the \
-             tolerance {tolerance}"
-        )));
-    }
-    Ok(())
 }
 
 /// The curve in the plane's coordinates, flattened to `z = 0`: a trim curve.

@@ -29,6 +29,7 @@ pub(crate) mod join;
 pub(crate) mod kinks;
 pub(crate) mod length_table;
 pub(crate) mod line;
+pub(crate) mod loop_plane;
 pub(crate) mod measure;
 pub(crate) mod nurbs;
 pub(crate) mod offset;

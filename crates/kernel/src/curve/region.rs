@@ -16,7 +16,7 @@
 //! the answer does not depend on the direction or seam of the input curves. Pieces shorter than
 //! the tolerance are dropped and the join bridges their gap.
 
-use crate::brep::planar::loop_plane;
+use crate::curve::loop_plane::loop_plane;
 use crate::{
     BoundingBox, Containment, Curve, Error, Interval, Plane, Point3, Result, Transform, Vector3,
 };
