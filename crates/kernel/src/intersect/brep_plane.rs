@@ -295,10 +295,22 @@ fn inside_runs(
         .iter()
         .map(|p| region.contains(brep, surface, p.trace.point, Some(p.uv), tolerance))
         .collect();
+    let trace: Vec<TracePoint> = arc.iter().map(|p| p.trace).collect();
+    runs_inside(&trace, &inside, crossings, tolerance)
+}
+
+/// The runs of consecutive traced points flagged inside, each extended to the crossing
+/// (of the boundary with the other shape) nearest the segment where it enters or leaves.
+pub(crate) fn runs_inside(
+    arc: &[TracePoint],
+    inside: &[bool],
+    crossings: &[Point3],
+    tolerance: f64,
+) -> Vec<Vec<TracePoint>> {
     // The crossing nearest the segment between two traced points, as a traced point with the
     // segment's direction.
-    let cut = |a: &SectionPoint, b: &SectionPoint| -> Option<TracePoint> {
-        let (p, q) = (a.trace.point, b.trace.point);
+    let cut = |a: &TracePoint, b: &TracePoint| -> Option<TracePoint> {
+        let (p, q) = (a.point, b.point);
         let d = q - p;
         let best = crossings
             .iter()
@@ -315,7 +327,7 @@ fn inside_runs(
             if current.is_empty() && k > 0 && !inside[k - 1] {
                 current.extend(cut(&arc[k - 1], &arc[k]));
             }
-            current.push(arc[k].trace);
+            current.push(arc[k]);
         } else if !current.is_empty() {
             current.extend(cut(&arc[k - 1], &arc[k]));
             runs.push(std::mem::take(&mut current));
@@ -343,7 +355,7 @@ fn segment_distance(x: Point3, p: Point3, d: Vector3) -> f64 {
 
 /// The pieces, each kept once: a piece whose ends match another's (in either direction) and
 /// whose quarter points lie within the tolerance of it is the same piece.
-fn without_duplicates(pieces: Vec<Curve>, tolerance: f64) -> Vec<Curve> {
+pub(crate) fn without_duplicates(pieces: Vec<Curve>, tolerance: f64) -> Vec<Curve> {
     let mut kept: Vec<Curve> = Vec::with_capacity(pieces.len());
     for c in pieces {
         let (s, e) = (c.start_point(), c.end_point());

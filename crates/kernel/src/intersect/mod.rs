@@ -11,6 +11,7 @@
 //! meeting and which nearby events are the same.
 
 pub(crate) mod bernstein;
+pub(crate) mod brep_brep;
 pub(crate) mod brep_curve;
 pub(crate) mod brep_plane;
 pub(crate) mod curve_curve;
@@ -26,3 +27,4 @@ pub(crate) mod patch;
 pub(crate) mod piece;
 pub(crate) mod surface_newton;
 pub(crate) mod surface_plane;
+pub(crate) mod surface_surface;

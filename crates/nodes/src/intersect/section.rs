@@ -1,8 +1,8 @@
-//! Intersect › Mathematical, on B-reps: Brep | Plane (a section) and Contour (a series of
-//! parallel sections of a B-rep or a mesh).
+//! Intersect, on B-reps: Brep | Plane (a section) and Contour (a series of parallel sections of
+//! a B-rep or a mesh), and Brep | Brep (Physical: where two B-reps meet).
 //!
 //! Sections come from the kernel ([`Brep::intersect_plane`], [`Brep::contour`],
-//! [`mesh_plane`]) within the intersection tolerance: planar faces give exact lines, curved
+//! [`mesh_plane`], [`Brep::intersect_brep`]) within the intersection tolerance: planar faces give exact lines, curved
 //! faces curves traced on the surface and fitted within a hundredth of the tolerance, all
 //! joined across the B-rep's edges.
 
@@ -20,10 +20,14 @@ pub const BREP_PLANE: &str = "intersect.brep_plane";
 /// Id of [`contour_node`].
 pub const CONTOUR: &str = "intersect.contour";
 
-/// Registers Brep | Plane and Contour.
+/// Id of [`brep_brep_node`].
+pub const BREP_BREP: &str = "intersect.brep_brep";
+
+/// Registers Brep | Plane, Contour and Brep | Brep.
 pub fn register(registry: &mut NodeRegistry) {
     registry.register(brep_plane_node());
     registry.register(contour_node());
+    registry.register(brep_brep_node());
 }
 
 fn mathematical(id: &str, name: &str, nickname: &str) -> NodeType {
@@ -69,6 +73,47 @@ pub fn brep_plane_node() -> NodeType {
             let section = brep.intersect_plane(&plane, INTERSECTION_TOLERANCE)?;
             s.set_list(0, section.curves.into_iter().map(Shared::new).collect());
             s.set_list(1, section.points);
+            Ok(())
+        })
+}
+
+/// Brep | Brep \[BBX\]: where two B-reps meet.
+pub fn brep_brep_node() -> NodeType {
+    NodeType::new(BREP_BREP, "Brep | Brep", "BBX", "Intersect")
+        .subcategory("Physical")
+        .gh_guid("904e4b56-484a-4814-b35f-aa4baf362117")
+        .description(
+            "Solves where two B-reps meet, within the intersection tolerance (0.001): the \
+             intersection curves, traced on both surfaces of every pair of faces, kept where \
+             they lie on both faces, joined across the edges and closed where they go round \
+             (two spheres give a circle, two overlapping boxes a polygon of lines), and the \
+             points where the B-reps only touch. Regions where the two B-reps coincide (faces \
+             lying on each other) give no curves.",
+        )
+        .input(
+            Port::new("Brep A", "A", DataType::Brep)
+                .doc("The first B-rep. Boxes and surfaces are taken as B-reps."),
+        )
+        .input(
+            Port::new("Brep B", "B", DataType::Brep)
+                .doc("The second B-rep. Boxes and surfaces are taken as B-reps."),
+        )
+        .output(
+            Port::new("Curves", "C", DataType::Curve)
+                .doc("The intersection curves.")
+                .list(),
+        )
+        .output(
+            Port::new("Points", "P", DataType::Point)
+                .doc("The points where the B-reps touch without a curve through them.")
+                .list(),
+        )
+        .solve(|s| {
+            let a = brep_item(s, 0)?;
+            let b = brep_item(s, 1)?;
+            let x = a.intersect_brep(&b, INTERSECTION_TOLERANCE)?;
+            s.set_list(0, x.curves.into_iter().map(Shared::new).collect());
+            s.set_list(1, x.points);
             Ok(())
         })
 }
@@ -286,6 +331,63 @@ mod tests {
             let radial = ((q.x - 1.0).powi(2) + (q.y + 2.0).powi(2)).sqrt();
             assert!((radial - 5f64.sqrt()).abs() < 1e-5, "{radial}");
         }
+    }
+
+    #[test]
+    fn two_spheres_meet_in_a_circle_and_touching_ones_in_a_point() {
+        // Radii 3 and 2, centres 4 apart: the circle at distance (16 + 9 − 4) / 8 from the
+        // first centre, of radius √(9 − 441/64).
+        let other = |x: f64| {
+            brep(
+                Brep::from_sphere(&Sphere::new(Point3::new(1.0 + x, -2.0, 0.5), 2.0).unwrap())
+                    .unwrap(),
+            )
+        };
+        let r = NodeCall::new(&brep_brep_node())
+            .input(brep(sphere()))
+            .input(other(4.0))
+            .run();
+        assert_clean(&r);
+        let c = curves(&r.outputs[0]);
+        assert_eq!(c.len(), 1);
+        assert!(c[0].is_closed());
+        let radius = (9.0f64 - 441.0 / 64.0).sqrt();
+        let want = 2.0 * PI * radius;
+        assert!((c[0].length() - want).abs() < 1e-6, "{}", c[0].length());
+        assert!(points(&r.outputs[1]).is_empty());
+
+        let r = NodeCall::new(&brep_brep_node())
+            .input(brep(sphere()))
+            .input(other(5.0))
+            .run();
+        assert_clean(&r);
+        assert!(curves(&r.outputs[0]).is_empty());
+        let p = points(&r.outputs[1]);
+        assert_eq!(p.len(), 1);
+        assert!(p[0].distance(Point3::new(4.0, -2.0, 0.5)) < 1e-3);
+    }
+
+    #[test]
+    fn a_box_through_a_sphere_and_bad_input() {
+        let r = NodeCall::new(&brep_brep_node())
+            .input(DataTree::from_item(a_box()))
+            .input(brep(
+                Brep::from_sphere(&Sphere::new(Point3::new(1.0, 1.5, 4.0), 1.0).unwrap()).unwrap(),
+            ))
+            .run();
+        assert_clean(&r);
+        // The top face z = 4 cuts the sphere along its equator, a circle of radius 1 inside
+        // the face.
+        let c = curves(&r.outputs[0]);
+        assert_eq!(c.len(), 1);
+        assert!(c[0].is_closed());
+        assert!((c[0].length() - 2.0 * PI).abs() < 1e-6, "{}", c[0].length());
+
+        let r = NodeCall::new(&brep_brep_node())
+            .input(brep(sphere()))
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .run();
+        assert_error(&r, "B");
     }
 
     #[test]

@@ -1,0 +1,298 @@
+//! Brep | Brep: intersections with closed forms (spheres, boxes, perpendicular cylinders, a
+//! plane through a capped cylinder checked against the B-rep's section by the same plane),
+//! and, on random pairs of spheres, that the curve is the one circle the two spheres share:
+//! every point on both spheres, and its length `2π·r`.
+
+use std::f64::consts::PI;
+
+use locus_kernel::{
+    Brep, Curve, Cylinder, Interval, NurbsSurface, OrientedBox, Plane, Point3, Sphere, Vector3,
+};
+use proptest::prelude::*;
+
+const TOL: f64 = 1e-9;
+
+fn sphere(x: f64, y: f64, z: f64, r: f64) -> Brep {
+    Brep::from_sphere(&Sphere::new(Point3::new(x, y, z), r).unwrap()).unwrap()
+}
+
+fn cube(lo: f64, hi: f64) -> Brep {
+    Brep::from_box(&OrientedBox::new(
+        Plane::WORLD_XY,
+        Interval::new(lo, hi),
+        Interval::new(lo, hi),
+        Interval::new(lo, hi),
+    ))
+    .unwrap()
+}
+
+/// The largest distance from points along the curves to the B-rep's faces.
+fn worst_distance(curves: &[Curve], brep: &Brep) -> f64 {
+    let mut worst: f64 = 0.0;
+    for c in curves {
+        for k in 0..=64 {
+            let p = c.point_at(c.domain().parameter_at(k as f64 / 64.0));
+            let d = brep
+                .faces()
+                .iter()
+                .filter_map(|f| f.surface.closest_point(p).ok())
+                .map(|cp| cp.distance)
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+    }
+    worst
+}
+
+fn total_length(curves: &[Curve]) -> f64 {
+    curves.iter().map(Curve::length).sum()
+}
+
+#[test]
+fn two_spheres_meet_in_one_closed_circle() {
+    let (a, b) = (sphere(0.0, 0.0, 0.0, 2.0), sphere(1.0, 1.5, 0.5, 1.5));
+    let x = a.intersect_brep(&b, TOL).unwrap();
+    assert_eq!(x.curves.len(), 1, "{:?}", x.curves.len());
+    assert!(x.curves[0].is_closed());
+    assert!(x.points.is_empty());
+    // The radical plane: distance h from a's centre along the line of centres.
+    let d = (1.0f64 + 2.25 + 0.25).sqrt();
+    let h = (d * d + 4.0 - 2.25) / (2.0 * d);
+    let r = (4.0 - h * h).sqrt();
+    assert!((x.curves[0].length() - 2.0 * PI * r).abs() < 1e-8);
+    assert!(worst_distance(&x.curves, &a) < TOL);
+    assert!(worst_distance(&x.curves, &b) < TOL);
+}
+
+#[test]
+fn apart_and_nested_spheres_do_not_meet() {
+    let a = sphere(0.0, 0.0, 0.0, 1.0);
+    for b in [sphere(3.0, 0.0, 0.0, 1.0), sphere(0.1, 0.0, 0.0, 0.5)] {
+        let x = a.intersect_brep(&b, TOL).unwrap();
+        assert!(x.curves.is_empty() && x.points.is_empty(), "{x:?}");
+    }
+}
+
+#[test]
+fn spheres_touching_outside_give_a_point() {
+    let x = sphere(0.0, 0.0, 0.0, 1.0)
+        .intersect_brep(&sphere(0.0, 2.0, 0.0, 1.0), TOL)
+        .unwrap();
+    assert!(x.curves.is_empty(), "{:?}", x.curves);
+    assert_eq!(x.points.len(), 1);
+    assert!(x.points[0].distance(Point3::new(0.0, 1.0, 0.0)) < 1e-6);
+}
+
+#[test]
+fn overlapping_cubes_meet_in_a_hexagon() {
+    let x = cube(0.0, 2.0).intersect_brep(&cube(1.0, 3.0), TOL).unwrap();
+    assert_eq!(x.curves.len(), 1, "{:?}", x.curves);
+    assert!(x.curves[0].is_closed());
+    assert!((x.curves[0].length() - 6.0).abs() < 1e-9);
+    let corners = [
+        Point3::new(2.0, 1.0, 1.0),
+        Point3::new(1.0, 2.0, 1.0),
+        Point3::new(1.0, 1.0, 2.0),
+        Point3::new(2.0, 2.0, 1.0),
+        Point3::new(2.0, 1.0, 2.0),
+        Point3::new(1.0, 2.0, 2.0),
+    ];
+    for c in corners {
+        let d = x.curves[0].closest_point(c).unwrap().distance;
+        assert!(d < TOL, "{c:?} at {d}");
+    }
+}
+
+#[test]
+fn perpendicular_cylinders_meet_in_two_closed_curves() {
+    // A thin cylinder along z through a wide one along x: two saddle-shaped loops.
+    let thin = Cylinder::new(
+        Plane::from_normal(Point3::new(0.0, 0.0, -3.0), Vector3::Z).unwrap(),
+        1.0,
+        6.0,
+    )
+    .unwrap();
+    let wide = Cylinder::new(
+        Plane::from_normal(Point3::new(-3.0, 0.0, 0.0), Vector3::X).unwrap(),
+        2.0,
+        6.0,
+    )
+    .unwrap();
+    let (a, b) = (
+        Brep::from_cylinder(&thin, false).unwrap(),
+        Brep::from_cylinder(&wide, false).unwrap(),
+    );
+    let x = a.intersect_brep(&b, TOL).unwrap();
+    assert_eq!(x.curves.len(), 2, "{:?}", x.curves);
+    assert!(x.curves.iter().all(Curve::is_closed));
+    assert!(worst_distance(&x.curves, &a) < TOL);
+    assert!(worst_distance(&x.curves, &b) < TOL);
+    // Each loop: (cos θ, sin θ, ±√(4 − sin²θ)); its length by dense quadrature.
+    let n = 200_000;
+    let mut length = 0.0;
+    let point = |t: f64| {
+        let (s, c) = t.sin_cos();
+        Point3::new(c, s, (4.0 - s * s).sqrt())
+    };
+    for k in 0..n {
+        let (t0, t1) = (
+            2.0 * PI * k as f64 / n as f64,
+            2.0 * PI * (k + 1) as f64 / n as f64,
+        );
+        length += point(t0).distance(point(t1));
+    }
+    for c in &x.curves {
+        assert!(
+            (c.length() - length).abs() < 1e-7,
+            "{} {length}",
+            c.length()
+        );
+    }
+}
+
+#[test]
+fn a_plane_through_a_capped_cylinder_gives_its_section() {
+    let cylinder = Cylinder::new(Plane::WORLD_XY, 1.0, 4.0).unwrap();
+    let solid = Brep::from_cylinder(&cylinder, true).unwrap();
+    let plane =
+        Plane::from_normal(Point3::new(0.0, 0.0, 2.0), Vector3::new(0.3, 0.2, 1.0)).unwrap();
+    let p = |x: f64, y: f64| plane.point_at(x, y, 0.0);
+    let sheet = NurbsSurface::non_rational(
+        1,
+        1,
+        vec![
+            vec![p(-5.0, -5.0), p(-5.0, 5.0)],
+            vec![p(5.0, -5.0), p(5.0, 5.0)],
+        ],
+        vec![0.0, 1.0],
+        vec![0.0, 1.0],
+    )
+    .unwrap();
+    let x = solid
+        .intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL)
+        .unwrap();
+    let section = solid.intersect_plane(&plane, TOL).unwrap();
+    assert_eq!(x.curves.len(), 1);
+    assert!(x.curves[0].is_closed());
+    assert!((total_length(&x.curves) - total_length(&section.curves)).abs() < 1e-8);
+
+    // Tilted far enough to cut the caps: a closed curve of lines and elliptic arcs.
+    let steep =
+        Plane::from_normal(Point3::new(0.0, 0.0, 2.0), Vector3::new(1.0, 0.0, 0.4)).unwrap();
+    let q = |x: f64, y: f64| steep.point_at(x, y, 0.0);
+    let sheet = NurbsSurface::non_rational(
+        1,
+        1,
+        vec![
+            vec![q(-9.0, -9.0), q(-9.0, 9.0)],
+            vec![q(9.0, -9.0), q(9.0, 9.0)],
+        ],
+        vec![0.0, 1.0],
+        vec![0.0, 1.0],
+    )
+    .unwrap();
+    let x = solid
+        .intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL)
+        .unwrap();
+    let section = solid.intersect_plane(&steep, TOL).unwrap();
+    assert_eq!(x.curves.len(), 1, "{:?}", x.curves);
+    assert!(x.curves[0].is_closed());
+    assert!((total_length(&x.curves) - total_length(&section.curves)).abs() < 1e-8);
+}
+
+#[test]
+fn a_bad_tolerance_is_an_error() {
+    let a = sphere(0.0, 0.0, 0.0, 1.0);
+    assert!(a.intersect_brep(&a, 0.0).is_err());
+    assert!(a.intersect_brep(&a, f64::NAN).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn random_spheres_share_their_circle(
+        c in (-1.5f64..1.5, -1.5f64..1.5, -1.5f64..1.5),
+        ra in 0.5f64..2.0,
+        rb in 0.5f64..2.0,
+    ) {
+        let d = (c.0 * c.0 + c.1 * c.1 + c.2 * c.2).sqrt();
+        // Clearly crossing: neither apart, nor nested, nor nearly touching.
+        prop_assume!(d < ra + rb - 0.05 && d > (ra - rb).abs() + 0.05);
+        let (a, b) = (sphere(0.0, 0.0, 0.0, ra), sphere(c.0, c.1, c.2, rb));
+        let x = a.intersect_brep(&b, TOL).unwrap();
+        prop_assert_eq!(x.curves.len(), 1);
+        prop_assert!(x.curves[0].is_closed());
+        let h = (d * d + ra * ra - rb * rb) / (2.0 * d);
+        let r = (ra * ra - h * h).sqrt();
+        prop_assert!((x.curves[0].length() - 2.0 * PI * r).abs() < 1e-7,
+            "length {} against {}", x.curves[0].length(), 2.0 * PI * r);
+        prop_assert!(worst_distance(&x.curves, &a) < 10.0 * TOL);
+        prop_assert!(worst_distance(&x.curves, &b) < 10.0 * TOL);
+    }
+}
+
+/// The length of `∂A ∩ ∂B` for boxes in general position: a face of A across axis `i` at
+/// `a` meets a face of B across axis `j ≠ i` at `b` along the third axis, where `a` lies within
+/// B's extent in `i`, `b` within A's extent in `j`, for the overlap of their extents in `k`.
+fn box_boundary_length(a: &[[f64; 2]; 3], b: &[[f64; 2]; 3]) -> f64 {
+    let within = |x: f64, r: [f64; 2]| r[0] < x && x < r[1];
+    let mut total = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            if i == j {
+                continue;
+            }
+            let k = 3 - i - j;
+            let overlap = (a[k][1].min(b[k][1]) - a[k][0].max(b[k][0])).max(0.0);
+            for &x in &a[i] {
+                for &y in &b[j] {
+                    if within(x, b[i]) && within(y, a[j]) {
+                        total += overlap;
+                    }
+                }
+            }
+        }
+    }
+    total
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn random_boxes_meet_along_their_boundaries(
+        lo_a in prop::array::uniform3(-1.0f64..0.0),
+        size_a in prop::array::uniform3(0.5f64..2.0),
+        lo_b in prop::array::uniform3(-1.0f64..1.0),
+        size_b in prop::array::uniform3(0.5f64..2.0),
+    ) {
+        let a = [0, 1, 2].map(|k| [lo_a[k], lo_a[k] + size_a[k]]);
+        let b = [0, 1, 2].map(|k| [lo_b[k], lo_b[k] + size_b[k]]);
+        // General position: no two face planes within 0.01 of each other.
+        for k in 0..3 {
+            for x in a[k] {
+                for y in b[k] {
+                    prop_assume!((x - y).abs() > 0.01);
+                }
+            }
+        }
+        let brep = |r: &[[f64; 2]; 3]| {
+            Brep::from_box(&OrientedBox::new(
+                Plane::WORLD_XY,
+                Interval::new(r[0][0], r[0][1]),
+                Interval::new(r[1][0], r[1][1]),
+                Interval::new(r[2][0], r[2][1]),
+            ))
+            .unwrap()
+        };
+        let (ba, bb) = (brep(&a), brep(&b));
+        let x = ba.intersect_brep(&bb, TOL).unwrap();
+        let expected = box_boundary_length(&a, &b);
+        prop_assert!((total_length(&x.curves) - expected).abs() < 1e-9,
+            "length {} against {expected}", total_length(&x.curves));
+        prop_assert!(x.curves.iter().all(Curve::is_closed), "{:?}", x.curves);
+        prop_assert!(worst_distance(&x.curves, &ba) < TOL);
+        prop_assert!(worst_distance(&x.curves, &bb) < TOL);
+    }
+}
