@@ -82,6 +82,7 @@ pub use crate::geometry::plane_fit::{LINE_SPREAD, PlaneFit};
 pub use crate::geometry::point::Point3;
 pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
+pub use crate::intersect::brep_brep::BrepIntersection;
 pub use crate::intersect::brep_curve::{BrepCurveHit, BrepCurveIntersections, BrepCurveOverlap};
 pub use crate::intersect::brep_plane::{
     BrepSection, ContourSection, MAX_CONTOUR_PLANES, contour_planes,

@@ -201,6 +201,18 @@ fn a_plane_through_a_capped_cylinder_gives_its_section() {
 }
 
 #[test]
+fn a_brep_with_itself_is_flagged_coincident() {
+    let a = sphere(1.0, 2.0, 3.0, 2.0);
+    let x = a.intersect_brep(&a, 1e-3).unwrap();
+    assert!(x.coincident);
+    assert!(x.curves.is_empty() && x.points.is_empty(), "{x:?}");
+    // Crossing spheres are not.
+    let x = a.intersect_brep(&sphere(2.0, 2.0, 3.0, 2.0), 1e-3).unwrap();
+    assert!(!x.coincident);
+    assert_eq!(x.curves.len(), 1);
+}
+
+#[test]
 fn a_bad_tolerance_is_an_error() {
     let a = sphere(0.0, 0.0, 0.0, 1.0);
     assert!(a.intersect_brep(&a, 0.0).is_err());

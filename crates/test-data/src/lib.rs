@@ -28,6 +28,16 @@ pub fn oracle_dir() -> PathBuf {
     repository_root().join("tests").join("data").join("oracle")
 }
 
+/// The folder of reference values this repository generates itself with the scripts in
+/// `tools/oracle/` (`tests/data/generated/`, see its README): checked in as generated, not
+/// compared with the shared oracle.
+pub fn generated_dir() -> PathBuf {
+    repository_root()
+        .join("tests")
+        .join("data")
+        .join("generated")
+}
+
 /// Reads one oracle file (`opennurbs-cases.json`, `occt-cases.json`, `ops-cases.json`) as JSON.
 ///
 /// # Panics

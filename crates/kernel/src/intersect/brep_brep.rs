@@ -13,7 +13,8 @@
 //! per cluster (`touching_radius`).
 //!
 //! Regions where the two B-reps coincide (overlapping faces) are not traced (see
-//! `surface_surface.rs`); their faces still meet the other faces along curves.
+//! `surface_surface.rs`) but flagged ([`BrepIntersection::coincident`]); their faces still meet
+//! the other faces along curves.
 
 use crate::intersect::brep_plane::{runs_inside, without_duplicates};
 use crate::intersect::curve_curve::check_tolerance;
@@ -21,7 +22,19 @@ use crate::intersect::curve_surface::check_surface;
 use crate::intersect::face_region::FaceRegion;
 use crate::intersect::hermite_fit::{TracePoint, fit};
 use crate::intersect::surface_surface::{surface_surface, touching_radius};
-use crate::{Brep, BrepSection, Curve, NurbsSurface, Point3, Result};
+use crate::{Brep, Curve, NurbsSurface, Point3, Result};
+
+/// Where two B-reps meet.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BrepIntersection {
+    /// The intersection curves, joined across the B-reps' edges; closed where they go round.
+    pub curves: Vec<Curve>,
+    /// Points where the B-reps touch without a curve through them.
+    pub points: Vec<Point3>,
+    /// Whether the B-reps coincide over some region (faces lying on each other): such regions
+    /// give neither curves nor points.
+    pub coincident: bool,
+}
 
 /// One face of one of the two B-reps, with what the intersection needs of it.
 struct Face<'a> {
@@ -73,7 +86,7 @@ impl Brep {
     /// let length = 2.0 * std::f64::consts::PI * 3.0f64.sqrt();
     /// assert!((x.curves[0].length() - length).abs() < 1e-8);
     /// ```
-    pub fn intersect_brep(&self, other: &Brep, tolerance: f64) -> Result<BrepSection> {
+    pub fn intersect_brep(&self, other: &Brep, tolerance: f64) -> Result<BrepIntersection> {
         check_tolerance(tolerance)?;
         for face in self.faces().iter().chain(other.faces()) {
             check_surface(&face.surface)?;
@@ -85,12 +98,13 @@ impl Brep {
         let (boxes_a, boxes_b) = (boxes(&faces_a), boxes(&faces_b));
         let mut pieces: Vec<Curve> = Vec::new();
         let mut lone: Vec<Point3> = Vec::new();
+        let mut coincident = false;
         for (fa, box_a) in faces_a.iter().zip(&boxes_a) {
             for (fb, box_b) in faces_b.iter().zip(&boxes_b) {
                 if !boxes_meet(box_a, box_b, tolerance) {
                     continue;
                 }
-                face_pair(fa, fb, tolerance, &mut pieces, &mut lone)?;
+                coincident |= face_pair(fa, fb, tolerance, &mut pieces, &mut lone)?;
             }
         }
         let pieces = without_duplicates(pieces, tolerance);
@@ -110,7 +124,11 @@ impl Brep {
                 points.push(p);
             }
         }
-        Ok(BrepSection { curves, points })
+        Ok(BrepIntersection {
+            curves,
+            points,
+            coincident,
+        })
     }
 }
 
@@ -134,15 +152,17 @@ fn boxes_meet(a: &crate::BoundingBox, b: &crate::BoundingBox, gap: f64) -> bool 
         && b0.z <= a1.z + gap
 }
 
-/// The share of one pair of faces: pieces of curves on both, and touching points.
+/// The share of one pair of faces: pieces of curves on both, and touching points; whether the
+/// faces' surfaces coincide somewhere.
 fn face_pair(
     fa: &Face,
     fb: &Face,
     tolerance: f64,
     pieces: &mut Vec<Curve>,
     lone: &mut Vec<Point3>,
-) -> Result<()> {
+) -> Result<bool> {
     let x = surface_surface(fa.surface, fb.surface, tolerance);
+    let coincident = x.coincident;
     for t in &x.touching {
         let p = t.trace.point;
         if fa.contains(p, t.a, tolerance) && fb.contains(p, t.b, tolerance) {
@@ -150,14 +170,14 @@ fn face_pair(
         }
     }
     if x.arcs.is_empty() {
-        return Ok(());
+        return Ok(coincident);
     }
     if fa.region.is_untrimmed() && fb.region.is_untrimmed() {
         for arc in &x.arcs {
             let points: Vec<TracePoint> = arc.iter().map(|p| p.trace).collect();
             pieces.push(Curve::Nurbs(fit(&points)?));
         }
-        return Ok(());
+        return Ok(coincident);
     }
     let mut crossings = fa.edge_crossings(fb.surface, tolerance);
     crossings.extend(fb.edge_crossings(fa.surface, tolerance));
@@ -176,5 +196,5 @@ fn face_pair(
             }
         }
     }
-    Ok(())
+    Ok(coincident)
 }

@@ -28,8 +28,10 @@
 //! [`TANGENTIAL`] of `|nA|·|nB|`) the curve's direction is not defined: a seed there is a
 //! touching point, reported as such, and a trace reaching such a place ends. Surfaces that
 //! overlap (coincide over a region) are tangent everywhere on it, so their common region gives
-//! touching points at most, never curves; that case is not handled (decided here: Rhino returns
-//! the overlap's boundary as curves). A traced curve along which the surfaces meet at so slight
+//! no curves; where a touching point turns out to have the other surface within the tolerance
+//! all around it (at [`touching_radius`] along both parameter directions), the surfaces are
+//! flagged as coincident instead, and no point is given for it. The overlap's boundary is not
+//! traced (decided here; Rhino returns it as curves). A traced curve along which the surfaces meet at so slight
 //! an angle that they stay within the tolerance of each other across a band wider than the
 //! curve is long is a touching point too. A degenerate side (a pole, where `nA` vanishes) ends a
 //! trace as well.
@@ -95,6 +97,8 @@ pub(crate) struct SurfaceSurface {
     pub(crate) arcs: Vec<Vec<PairPoint>>,
     /// Points where the surfaces touch (are tangent) with the parameters on both.
     pub(crate) touching: Vec<PairPoint>,
+    /// Whether the surfaces coincide over some region (not traced).
+    pub(crate) coincident: bool,
 }
 
 /// The four unknowns `(u, v, s, t)`.
@@ -148,9 +152,13 @@ pub(crate) fn surface_surface(
     };
     let mut seeds = boundary_seeds(&tracer, true);
     seeds.extend(boundary_seeds(&tracer, false));
-    seeds.extend(leaf_seeds(&pa, &pb, &tracer));
+    let mut coincident = false;
+    seeds.extend(leaf_seeds(&pa, &pb, &tracer, &mut coincident));
     let touch_radius = touching_radius(tolerance, size);
-    let mut out = SurfaceSurface::default();
+    let mut out = SurfaceSurface {
+        coincident,
+        ..SurfaceSurface::default()
+    };
     for seed in seeds {
         if out
             .arcs
@@ -160,7 +168,9 @@ pub(crate) fn surface_surface(
             continue;
         }
         let mut touching = |seed: PairPoint| {
-            if out.touching.len() < MAX_TOUCHING
+            if tracer.coincide_near(&seed, touch_radius) {
+                out.coincident = true;
+            } else if out.touching.len() < MAX_TOUCHING
                 && !out
                     .touching
                     .iter()
@@ -291,7 +301,12 @@ fn boundary_seeds(tracer: &Tracer, of_a: bool) -> Vec<PairPoint> {
 }
 
 /// Intersection points near the leaves of the patch pairs, in a deterministic order.
-fn leaf_seeds(pa: &[Patch], pb: &[Patch], tracer: &Tracer) -> Vec<PairPoint> {
+fn leaf_seeds(
+    pa: &[Patch],
+    pb: &[Patch],
+    tracer: &Tracer,
+    coincident: &mut bool,
+) -> Vec<PairPoint> {
     let tolerance = tracer.tolerance;
     let mut out = Vec::new();
     let mut leaves = 0;
@@ -311,6 +326,12 @@ fn leaf_seeds(pa: &[Patch], pb: &[Patch], tracer: &Tracer) -> Vec<PairPoint> {
                 }
                 let (bp, bq) = (p.aabb(), q.aabb());
                 if !boxes_meet(&bp, &bq, tolerance) {
+                    continue;
+                }
+                if same_net(&p, &q, tolerance) {
+                    // The same piece of surface twice (a face given to both sides): coincident,
+                    // nothing to trace, and no need to subdivide it into thousands of leaves.
+                    *coincident = true;
                     continue;
                 }
                 let (sp, sq) = (p.slab(), q.slab());
@@ -355,6 +376,29 @@ fn leaf_seeds(pa: &[Patch], pb: &[Patch], tracer: &Tracer) -> Vec<PairPoint> {
         }
     }
     out
+}
+
+/// Whether two patches have the same control net within the tolerance (in either order of
+/// their rows and columns), so that they are the same piece of surface.
+fn same_net(p: &Patch, q: &Patch, tolerance: f64) -> bool {
+    if p.nu != q.nu || p.nv != q.nv {
+        return false;
+    }
+    let (nu, nv) = (p.nu, p.nv);
+    let flips = [(false, false), (true, false), (false, true), (true, true)];
+    flips.iter().any(|&(fu, fv)| {
+        (0..nu).all(|i| {
+            (0..nv).all(|j| {
+                let (qi, qj) = (
+                    if fu { nu - 1 - i } else { i },
+                    if fv { nv - 1 - j } else { j },
+                );
+                let (a, b) = (p.homogeneous(i, j), q.homogeneous(qi, qj));
+                p.point(i, j).distance(q.point(qi, qj)) <= tolerance
+                    && (a[3] - b[3]).abs() <= 1e-12 * a[3].abs().max(b[3].abs())
+            })
+        })
+    })
 }
 
 /// The control points of a patch.
@@ -412,6 +456,60 @@ impl Tracer<'_> {
         for (k, v) in x.iter_mut().enumerate() {
             *v = v.clamp(self.bounds[k][0], self.bounds[k][1]);
         }
+    }
+
+    /// Whether the surfaces coincide around a point where they touch: four points of A at
+    /// `radius` from it, along its parameter directions, lie within the tolerance of B.
+    fn coincide_near(&self, p: &PairPoint, radius: f64) -> bool {
+        let x = seed_x(p);
+        let [(_, au, av), _] = self.eval(&x);
+        let (lu, lv) = (au.length(), av.length());
+        if lu == 0.0 && lv == 0.0 {
+            return false;
+        }
+        // A direction collapsed at a pole moves nowhere; the other one still does.
+        let along_u = if lu > 0.0 { radius / lu } else { 0.0 };
+        let along_v = if lv > 0.0 { radius / lv } else { 0.0 };
+        let offsets = [
+            (along_u, 0.0),
+            (-along_u, 0.0),
+            (0.0, along_v),
+            (0.0, -along_v),
+        ];
+        offsets.iter().all(|&(du, dv)| {
+            let u = (x[0] + du).clamp(self.bounds[0][0], self.bounds[0][1]);
+            let v = (x[1] + dv).clamp(self.bounds[1][0], self.bounds[1][1]);
+            let q = self.a.point_at(u, v);
+            self.distance_to_b(q, (x[2], x[3])) <= self.tolerance
+        })
+    }
+
+    /// The distance from `q` to B: by Gauss–Newton from the parameters `start`, or, where
+    /// that does not come within the tolerance, B's closest point.
+    fn distance_to_b(&self, q: Point3, start: (f64, f64)) -> f64 {
+        let (mut s, mut t) = start;
+        for _ in 0..NEWTON_STEPS {
+            let d = self.b.derivatives_unchecked(s, t, 1);
+            let Some((ds, dt)) = planar_step(d.du, d.dv, q - d.point) else {
+                break;
+            };
+            let next = (
+                (s + ds).clamp(self.bounds[2][0], self.bounds[2][1]),
+                (t + dt).clamp(self.bounds[3][0], self.bounds[3][1]),
+            );
+            if next == (s, t) {
+                break;
+            }
+            (s, t) = next;
+        }
+        let local = self.b.point_at(s, t).distance(q);
+        if local <= self.tolerance {
+            return local;
+        }
+        // Across a seam the nearest point has other parameters: the global search.
+        self.b
+            .closest_point(q)
+            .map_or(local, |c| c.distance.min(local))
     }
 
     /// Whether a traced curve is too short for the angle at which the surfaces meet along it

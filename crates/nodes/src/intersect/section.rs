@@ -88,7 +88,7 @@ pub fn brep_brep_node() -> NodeType {
              they lie on both faces, joined across the edges and closed where they go round \
              (two spheres give a circle, two overlapping boxes a polygon of lines), and the \
              points where the B-reps only touch. Regions where the two B-reps coincide (faces \
-             lying on each other) give no curves.",
+             lying on each other) give no curves, with a warning.",
         )
         .input(
             Port::new("Brep A", "A", DataType::Brep)
@@ -112,6 +112,12 @@ pub fn brep_brep_node() -> NodeType {
             let a = brep_item(s, 0)?;
             let b = brep_item(s, 1)?;
             let x = a.intersect_brep(&b, INTERSECTION_TOLERANCE)?;
+            if x.coincident {
+                s.warning(
+                    "the B-reps coincide over a region (faces lying on each other): the region \
+                     gives no curves or points",
+                );
+            }
             s.set_list(0, x.curves.into_iter().map(Shared::new).collect());
             s.set_list(1, x.points);
             Ok(())
@@ -388,6 +394,14 @@ mod tests {
             .input(DataTree::from_item(Point3::ORIGIN))
             .run();
         assert_error(&r, "B");
+
+        let r = NodeCall::new(&brep_brep_node())
+            .input(brep(sphere()))
+            .input(brep(sphere()))
+            .run();
+        assert!(curves(&r.outputs[0]).is_empty() && points(&r.outputs[1]).is_empty());
+        let m = messages(&r, Level::Warning);
+        assert!(m.iter().any(|t| t.contains("coincide")), "{m:?}");
     }
 
     #[test]
