@@ -308,3 +308,98 @@ proptest! {
         prop_assert!(worst_distance(&x.curves, &bb) < TOL);
     }
 }
+
+/// A bicubic surface over `[0, 3]²` with the given heights at its 4 × 4 control points.
+fn bumpy(heights: &[f64; 16]) -> NurbsSurface {
+    let points = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| Point3::new(i as f64, j as f64, heights[4 * i + j]))
+                .collect()
+        })
+        .collect();
+    NurbsSurface::non_rational(
+        3,
+        3,
+        points,
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+    )
+    .unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// A free-form surface against a planar sheet larger than it: the same curves as the
+    /// section by the sheet's plane (an independent algorithm, `surface_plane.rs`).
+    #[test]
+    fn a_free_form_surface_meets_a_sheet_as_its_plane_section(
+        heights in prop::array::uniform16(-1.0f64..1.0),
+        z in -0.5f64..0.5,
+        tilt in prop::array::uniform2(-0.3f64..0.3),
+    ) {
+        let surface = Brep::from_surface(bumpy(&heights)).unwrap();
+        let normal = Vector3::new(tilt[0], tilt[1], 1.0);
+        let plane = Plane::from_normal(Point3::new(1.5, 1.5, z), normal).unwrap();
+        let p = |x: f64, y: f64| plane.point_at(x, y, 0.0);
+        let sheet = NurbsSurface::non_rational(
+            1,
+            1,
+            vec![vec![p(-9.0, -9.0), p(-9.0, 9.0)], vec![p(9.0, -9.0), p(9.0, 9.0)]],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
+        .unwrap();
+        let x = surface.intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL).unwrap();
+        let section = surface.intersect_plane(&plane, TOL).unwrap();
+        let (got, want) = (total_length(&x.curves), total_length(&section.curves));
+        prop_assert!((got - want).abs() < 1e-8 * want.max(1.0), "length {got} against {want}");
+        prop_assert_eq!(x.curves.len(), section.curves.len());
+        prop_assert!(worst_distance(&x.curves, &surface) < 10.0 * TOL);
+    }
+}
+
+/// The length of the curves' projection on the world XY plane, by dense polylines.
+fn projected_length(curves: &[Curve]) -> f64 {
+    let mut total = 0.0;
+    for c in curves {
+        let n = 20_000;
+        let flat = |k: usize| {
+            let p = c.point_at(c.domain().parameter_at(k as f64 / n as f64));
+            Point3::new(p.x, p.y, 0.0)
+        };
+        total += (0..n).map(|k| flat(k).distance(flat(k + 1))).sum::<f64>();
+    }
+    total
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Two free-form surfaces that are both graphs over the same square (their control points
+    /// lie on the same grid, so `x` and `y` are linear in the parameters): they meet where the
+    /// difference of their heights vanishes, which is the section by `z = 0` of the surface
+    /// with the differences of their heights. The curves' projection on XY is that section.
+    #[test]
+    fn two_free_form_graphs_meet_where_their_heights_agree(
+        a in prop::array::uniform16(-1.0f64..1.0),
+        b in prop::array::uniform16(-1.0f64..1.0),
+    ) {
+        let difference: [f64; 16] = std::array::from_fn(|k| a[k] - b[k]);
+        let (sa, sb) = (
+            Brep::from_surface(bumpy(&a)).unwrap(),
+            Brep::from_surface(bumpy(&b)).unwrap(),
+        );
+        let x = sa.intersect_brep(&sb, TOL).unwrap();
+        let section = Brep::from_surface(bumpy(&difference))
+            .unwrap()
+            .intersect_plane(&Plane::WORLD_XY, TOL)
+            .unwrap();
+        prop_assert_eq!(x.curves.len(), section.curves.len());
+        let (got, want) = (projected_length(&x.curves), total_length(&section.curves));
+        prop_assert!((got - want).abs() < 1e-6 * want.max(1.0), "length {got} against {want}");
+        prop_assert!(worst_distance(&x.curves, &sa) < 10.0 * TOL);
+        prop_assert!(worst_distance(&x.curves, &sb) < 10.0 * TOL);
+    }
+}
