@@ -11,6 +11,9 @@
 //!   against one `point_at` per query.
 //! - `sphere`: building 10,000 spheres' NURBS surfaces (what the Sphere node outputs per item),
 //!   against copying a 45-point control grid per item.
+//! - `brep_brep`: the intersection of two crossing spheres and of a bicubic free-form surface
+//!   with a planar sheet, against the section of the same free-form surface by the sheet's
+//!   plane (`intersect_plane`, the baseline: the same curves by a cheaper algorithm).
 //!
 //! Every time is the CPU time of the benchmarking thread (see `support/cpu_time.rs`): the
 //! machine these figures come from is shared, and wall-clock times there count the time other
@@ -29,7 +32,7 @@ mod cpu_time;
 #[path = "support/query_fixtures.rs"]
 mod query_fixtures;
 use cpu_time::ThreadCpuTime;
-use locus_kernel::{NurbsSurface, Point3, Sphere};
+use locus_kernel::{Brep, NurbsSurface, Plane, Point3, Sphere, Vector3};
 use query_fixtures::{bicubic, curve, queries};
 
 /// The default number of divisions.
@@ -211,9 +214,69 @@ fn bench_sphere(c: &mut Criterion<ThreadCpuTime>) {
     group.finish();
 }
 
+fn bench_brep_brep(c: &mut Criterion<ThreadCpuTime>) {
+    let mut group = c.benchmark_group("brep_brep");
+    group.sample_size(10);
+    let sphere = |x: f64, r: f64| {
+        Brep::from_sphere(&Sphere::new(Point3::new(x, 0.3, -0.2), r).expect("sphere"))
+            .expect("sphere brep")
+    };
+    let (a, b) = (sphere(0.0, 2.0), sphere(1.5, 1.3));
+    // A bicubic graph over [0, 3]² with heights in [−1, 1], and a sheet through its middle.
+    let heights = [
+        0.3, -0.8, 0.5, 0.1, -0.4, 0.9, -0.2, 0.6, 0.7, -0.5, 0.2, -0.9, -0.1, 0.4, -0.6, 0.8,
+    ];
+    let points = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| Point3::new(i as f64, j as f64, heights[4 * i + j]))
+                .collect()
+        })
+        .collect();
+    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    let free_form = Brep::from_surface(
+        NurbsSurface::non_rational(3, 3, points, knots.clone(), knots).expect("surface"),
+    )
+    .expect("surface brep");
+    let plane = Plane::from_normal(Point3::new(1.5, 1.5, 0.05), Vector3::new(0.1, -0.2, 1.0))
+        .expect("plane");
+    let corner = |x: f64, y: f64| plane.point_at(x, y, 0.0);
+    let sheet = Brep::from_surface(
+        NurbsSurface::non_rational(
+            1,
+            1,
+            vec![
+                vec![corner(-9.0, -9.0), corner(-9.0, 9.0)],
+                vec![corner(9.0, -9.0), corner(9.0, 9.0)],
+            ],
+            vec![0.0, 1.0],
+            vec![0.0, 1.0],
+        )
+        .expect("sheet"),
+    )
+    .expect("sheet brep");
+    group.bench_function("free_form_plane_section_baseline", |bench| {
+        bench.iter(|| black_box(free_form.intersect_plane(&plane, 1e-6).expect("section")));
+    });
+    group.bench_function("free_form_sheet", |bench| {
+        bench.iter(|| {
+            black_box(
+                free_form
+                    .intersect_brep(&sheet, 1e-6)
+                    .expect("intersection"),
+            )
+        });
+    });
+    group.bench_function("two_spheres", |bench| {
+        bench.iter(|| black_box(a.intersect_brep(&b, 1e-6).expect("intersection")));
+    });
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().with_measurement(ThreadCpuTime);
-    targets = bench_divide, bench_curve_closest, bench_surface_closest, bench_sphere
+    targets = bench_divide, bench_curve_closest, bench_surface_closest, bench_sphere,
+        bench_brep_brep
 }
 criterion_main!(benches);
