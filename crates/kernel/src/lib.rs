@@ -49,6 +49,7 @@ pub use crate::curve::arc::Arc;
 pub use crate::curve::arc_length::MAX_DIVISIONS;
 pub use crate::curve::bezier::Bezier;
 pub use crate::curve::circle::Circle;
+pub use crate::curve::circle_fit::CircleFit;
 pub use crate::curve::closest_point::CurveClosestPoint;
 pub use crate::curve::containment::Containment;
 pub use crate::curve::continuity::{

@@ -76,8 +76,8 @@
 //!
 //! **Curve** ([`curve`])
 //! - Primitive ([`curve::primitive`]): Line \[Ln\], Circle \[Cir\], Arc; ([`curve::primitive_more`])
-//!   Line SDL, Circle CNR, Circle 3Pt, Arc 3Pt, Arc SED, Polygon, Rectangle, and Curve Middle
-//!   \[MidPt\] (Analysis).
+//!   Line SDL, Circle CNR, Circle 3Pt, Circle Fit, Arc 3Pt, Arc SED, Polygon, Rectangle, and
+//!   Curve Middle \[MidPt\] (Analysis).
 //! - Spline ([`curve::spline`]): PolyLine \[PLine\], Bezier Span \[BzSpan\], Nurbs Curve
 //!   \[Nurbs\], Nurbs Curve PWK \[NurbCrv\], Interpolate \[IntCrv\], Knot Vector \[Knots\].
 //! - Analysis ([`curve::analysis`]): Control Points \[CP\], Evaluate Curve \[Eval\], Curvature,

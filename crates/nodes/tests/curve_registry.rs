@@ -48,6 +48,7 @@ fn curve_ids_are_registered() {
         primitive_more::LINE_SDL,
         primitive_more::CIRCLE_CNR,
         primitive_more::CIRCLE_3PT,
+        primitive_more::CIRCLE_FIT,
         primitive_more::ARC_3PT,
         primitive_more::ARC_SED,
         primitive_more::POLYGON,

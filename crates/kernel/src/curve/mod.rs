@@ -15,6 +15,7 @@ pub(crate) mod arc_length;
 pub(crate) mod bezier;
 pub(crate) mod bezier_piece;
 pub(crate) mod circle;
+pub(crate) mod circle_fit;
 pub(crate) mod closest_point;
 pub(crate) mod containment;
 pub(crate) mod continuity;

@@ -1,5 +1,5 @@
-//! Curve › Primitive, from points and directions: Line SDL, Circle CNR, Circle 3Pt, Arc 3Pt,
-//! Arc SED, Polygon and Rectangle; and Curve › Analysis › Curve Middle.
+//! Curve › Primitive, from points and directions: Line SDL, Circle CNR, Circle 3Pt, Circle
+//! Fit, Arc 3Pt, Arc SED, Polygon and Rectangle; and Curve › Analysis › Curve Middle.
 //!
 //! The constructions are the kernel's (`Circle::from_three_points`, `Arc::from_three_points`,
 //! `Arc::from_start_tangent_end`, `Circle::from_center_normal`), which reject degenerate input
@@ -22,6 +22,8 @@ pub const LINE_SDL: &str = "curve.line_sdl";
 pub const CIRCLE_CNR: &str = "curve.circle_cnr";
 /// Id of [`circle_3pt`].
 pub const CIRCLE_3PT: &str = "curve.circle_3pt";
+/// Id of [`circle_fit`].
+pub const CIRCLE_FIT: &str = "curve.circle_fit";
 /// Id of [`arc_3pt`].
 pub const ARC_3PT: &str = "curve.arc_3pt";
 /// Id of [`arc_sed`].
@@ -39,6 +41,7 @@ pub fn register(registry: &mut NodeRegistry) {
         line_sdl(),
         circle_cnr(),
         circle_3pt(),
+        circle_fit(),
         arc_3pt(),
         arc_sed(),
         polygon(),
@@ -139,6 +142,39 @@ pub fn circle_3pt() -> NodeType {
             s.set(0, circle);
             s.set(1, circle.plane);
             s.set(2, circle.radius);
+            Ok(())
+        })
+}
+
+/// Circle Fit \[Circle Fit\]: the circle that fits a list of points best.
+pub fn circle_fit() -> NodeType {
+    primitive(CIRCLE_FIT, "Circle Fit", "Circle Fit")
+        .gh_guid("be52336f-a2e1-43b1-b5f5-178ba489508a")
+        .description(
+            "Fits a circle to a list of points (Rhino's Circle.TryFitCircleToPoints): in the \
+             plane that fits the points best, the circle that minimises the sum of squared \
+             distances from the points (algebraic fit refined by Gauss–Newton), exact for \
+             points on a circle. Gives the circle, its radius and the largest distance from a \
+             point to it. Fewer than three points, or points on one line, are an error; empty \
+             items are skipped.",
+        )
+        .input(
+            Port::new("Points", "P", DataType::Point)
+                .doc("The points to fit, at least three not on one line.")
+                .list(),
+        )
+        .output(Port::new("Circle", "C", DataType::Circle).doc("The fitted circle."))
+        .output(Port::new("Radius", "R", DataType::Number).doc("Its radius."))
+        .output(
+            Port::new("Deviation", "D", DataType::Number)
+                .doc("The largest distance from one of the points to the circle."),
+        )
+        .solve(|s| {
+            let points: Vec<Point3> = s.list::<Point3>(0)?.present().copied().collect();
+            let fit = Circle::fit(&points)?;
+            s.set(0, fit.circle);
+            s.set(1, fit.circle.radius);
+            s.set(2, fit.deviation);
             Ok(())
         })
 }
@@ -464,6 +500,42 @@ mod tests {
         let r = NodeCall::new(&circle_cnr())
             .input(DataTree::from_item(p(0.0, 0.0, 0.0)))
             .input(DataTree::from_item(Vector3::ZERO))
+            .run();
+        assert_eq!(messages(&r, Level::Error).len(), 1);
+    }
+
+    #[test]
+    fn circle_fit_gives_back_a_circle_and_reports_bad_points() {
+        // Six points on the circle of radius 2 about (1, -1, 4) in a tilted plane.
+        let c = Circle::from_center_normal(p(1.0, -1.0, 4.0), Vector3::new(1.0, 1.0, 2.0), 2.0)
+            .unwrap();
+        let points: Vec<Point3> = [0.2, 1.1, 1.9, 3.0, 4.4, 5.5]
+            .iter()
+            .map(|&t: &f64| {
+                c.plane.origin + (c.plane.x_axis * t.cos() + c.plane.y_axis * t.sin()) * 2.0
+            })
+            .collect();
+        let r = NodeCall::new(&circle_fit())
+            .input(DataTree::from_list(points))
+            .run();
+        let fitted = only::<Circle>(&r, 0);
+        assert!(close(fitted.center(), p(1.0, -1.0, 4.0)));
+        assert!((only::<f64>(&r, 1) - 2.0).abs() < 1e-12);
+        assert!(only::<f64>(&r, 2) < 1e-12);
+
+        let r = NodeCall::new(&circle_fit())
+            .input(DataTree::from_list(vec![
+                p(0.0, 0.0, 0.0),
+                p(1.0, 1.0, 0.0),
+            ]))
+            .run();
+        assert_eq!(messages(&r, Level::Error).len(), 1);
+        let r = NodeCall::new(&circle_fit())
+            .input(DataTree::from_list(vec![
+                p(0.0, 0.0, 0.0),
+                p(1.0, 0.0, 0.0),
+                p(3.0, 0.0, 0.0),
+            ]))
             .run();
         assert_eq!(messages(&r, Level::Error).len(), 1);
     }
