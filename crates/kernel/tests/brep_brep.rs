@@ -403,3 +403,55 @@ proptest! {
         prop_assert!(worst_distance(&x.curves, &sb) < 10.0 * TOL);
     }
 }
+
+/// The square `[−3, 3]²` in the world XY plane with a round hole of radius 1 about the origin:
+/// a trimmed planar face.
+fn square_with_hole() -> Brep {
+    let square = locus_kernel::Polyline::new(vec![
+        Point3::new(-3.0, -3.0, 0.0),
+        Point3::new(3.0, -3.0, 0.0),
+        Point3::new(3.0, 3.0, 0.0),
+        Point3::new(-3.0, 3.0, 0.0),
+        Point3::new(-3.0, -3.0, 0.0),
+    ])
+    .unwrap();
+    let outer = Curve::from(square).to_nurbs();
+    let hole = locus_kernel::Circle::new(Plane::WORLD_XY, 1.0)
+        .unwrap()
+        .to_nurbs();
+    Brep::from_planar_loops(&[vec![outer], vec![hole]], TOL).unwrap()
+}
+
+#[test]
+fn a_sphere_through_a_face_with_a_hole_keeps_what_lies_on_the_face() {
+    let face = square_with_hole();
+    // Radius 2: the whole circle lies between the hole and the square's sides.
+    let x = face
+        .intersect_brep(&sphere(0.0, 0.0, 0.0, 2.0), TOL)
+        .unwrap();
+    assert_eq!(x.curves.len(), 1);
+    assert!(x.curves[0].is_closed());
+    assert!((x.curves[0].length() - 4.0 * PI).abs() < 1e-9);
+    // Radius 0.5: the circle lies in the hole.
+    let x = face
+        .intersect_brep(&sphere(0.0, 0.0, 0.0, 0.5), TOL)
+        .unwrap();
+    assert!(x.curves.is_empty() && x.points.is_empty(), "{x:?}");
+    // Radius 3.5: four arcs, each between two sides, where |x| ≤ 3 and |y| ≤ 3, ending exactly
+    // on the sides.
+    let x = face
+        .intersect_brep(&sphere(0.0, 0.0, 0.0, 3.5), TOL)
+        .unwrap();
+    assert_eq!(x.curves.len(), 4, "{:?}", x.curves);
+    let alpha = (3.0f64 / 3.5).acos();
+    let arc = (PI / 2.0 - 2.0 * alpha) * 3.5;
+    for c in &x.curves {
+        assert!(!c.is_closed());
+        assert!((c.length() - arc).abs() < 1e-9, "{} {arc}", c.length());
+        for end in [c.start_point(), c.end_point()] {
+            let on_side = (end.x.abs() - 3.0).abs() < 1e-9 || (end.y.abs() - 3.0).abs() < 1e-9;
+            assert!(on_side, "{end:?}");
+            assert!((end.x.hypot(end.y) - 3.5).abs() < 1e-9);
+        }
+    }
+}

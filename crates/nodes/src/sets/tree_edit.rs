@@ -3,8 +3,8 @@
 //!
 //! Split Tree matches paths against Grasshopper's path masks ([`PathMask`]). Stream Filter
 //! has a variable number of inputs: the first is the gate, the others the streams
-//! (`inputs: ["G", "0", "1", "2"]`). Stream Gate has Grasshopper's default two outputs (the
-//! runtime has no variable outputs yet).
+//! (`inputs: ["G", "0", "1", "2"]`). Stream Gate has variable outputs, two by default as in
+//! Grasshopper (`outputs: ["0", "1", "2"]` for three).
 
 use locus_runtime::{
     Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Solve, TreePath, Value,
