@@ -3,12 +3,15 @@
 //! and, on random pairs of spheres, that the curve is the one circle the two spheres share:
 //! every point on both spheres, and its length `2π·r`.
 
+mod support;
+
 use std::f64::consts::PI;
 
 use locus_kernel::{
     Brep, Curve, Cylinder, Interval, NurbsSurface, OrientedBox, Plane, Point3, Sphere, Vector3,
 };
 use proptest::prelude::*;
+use support::worst_distance;
 
 const TOL: f64 = 1e-9;
 
@@ -26,22 +29,21 @@ fn cube(lo: f64, hi: f64) -> Brep {
     .unwrap()
 }
 
-/// The largest distance from points along the curves to the B-rep's faces.
-fn worst_distance(curves: &[Curve], brep: &Brep) -> f64 {
-    let mut worst: f64 = 0.0;
-    for c in curves {
-        for k in 0..=64 {
-            let p = c.point_at(c.domain().parameter_at(k as f64 / 64.0));
-            let d = brep
-                .faces()
-                .iter()
-                .filter_map(|f| f.surface.closest_point(p).ok())
-                .map(|cp| cp.distance)
-                .fold(f64::INFINITY, f64::min);
-            worst = worst.max(d);
-        }
-    }
-    worst
+/// The square sheet of half size `half` about `plane`'s origin, in the plane, as a B-rep.
+fn sheet(plane: &Plane, half: f64) -> Brep {
+    let p = |x: f64, y: f64| plane.point_at(x, y, 0.0);
+    let surface = NurbsSurface::non_rational(
+        1,
+        1,
+        vec![
+            vec![p(-half, -half), p(-half, half)],
+            vec![p(half, -half), p(half, half)],
+        ],
+        vec![0.0, 1.0],
+        vec![0.0, 1.0],
+    )
+    .unwrap();
+    Brep::from_surface(surface).unwrap()
 }
 
 fn total_length(curves: &[Curve]) -> f64 {
@@ -156,21 +158,7 @@ fn a_plane_through_a_capped_cylinder_gives_its_section() {
     let solid = Brep::from_cylinder(&cylinder, true).unwrap();
     let plane =
         Plane::from_normal(Point3::new(0.0, 0.0, 2.0), Vector3::new(0.3, 0.2, 1.0)).unwrap();
-    let p = |x: f64, y: f64| plane.point_at(x, y, 0.0);
-    let sheet = NurbsSurface::non_rational(
-        1,
-        1,
-        vec![
-            vec![p(-5.0, -5.0), p(-5.0, 5.0)],
-            vec![p(5.0, -5.0), p(5.0, 5.0)],
-        ],
-        vec![0.0, 1.0],
-        vec![0.0, 1.0],
-    )
-    .unwrap();
-    let x = solid
-        .intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL)
-        .unwrap();
+    let x = solid.intersect_brep(&sheet(&plane, 5.0), TOL).unwrap();
     let section = solid.intersect_plane(&plane, TOL).unwrap();
     assert_eq!(x.curves.len(), 1);
     assert!(x.curves[0].is_closed());
@@ -179,21 +167,7 @@ fn a_plane_through_a_capped_cylinder_gives_its_section() {
     // Tilted far enough to cut the caps: a closed curve of lines and elliptic arcs.
     let steep =
         Plane::from_normal(Point3::new(0.0, 0.0, 2.0), Vector3::new(1.0, 0.0, 0.4)).unwrap();
-    let q = |x: f64, y: f64| steep.point_at(x, y, 0.0);
-    let sheet = NurbsSurface::non_rational(
-        1,
-        1,
-        vec![
-            vec![q(-9.0, -9.0), q(-9.0, 9.0)],
-            vec![q(9.0, -9.0), q(9.0, 9.0)],
-        ],
-        vec![0.0, 1.0],
-        vec![0.0, 1.0],
-    )
-    .unwrap();
-    let x = solid
-        .intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL)
-        .unwrap();
+    let x = solid.intersect_brep(&sheet(&steep, 9.0), TOL).unwrap();
     let section = solid.intersect_plane(&steep, TOL).unwrap();
     assert_eq!(x.curves.len(), 1, "{:?}", x.curves);
     assert!(x.curves[0].is_closed());
@@ -342,16 +316,7 @@ proptest! {
         let surface = Brep::from_surface(bumpy(&heights)).unwrap();
         let normal = Vector3::new(tilt[0], tilt[1], 1.0);
         let plane = Plane::from_normal(Point3::new(1.5, 1.5, z), normal).unwrap();
-        let p = |x: f64, y: f64| plane.point_at(x, y, 0.0);
-        let sheet = NurbsSurface::non_rational(
-            1,
-            1,
-            vec![vec![p(-9.0, -9.0), p(-9.0, 9.0)], vec![p(9.0, -9.0), p(9.0, 9.0)]],
-            vec![0.0, 1.0],
-            vec![0.0, 1.0],
-        )
-        .unwrap();
-        let x = surface.intersect_brep(&Brep::from_surface(sheet).unwrap(), TOL).unwrap();
+        let x = surface.intersect_brep(&sheet(&plane, 9.0), TOL).unwrap();
         let section = surface.intersect_plane(&plane, TOL).unwrap();
         let (got, want) = (total_length(&x.curves), total_length(&section.curves));
         prop_assert!((got - want).abs() < 1e-8 * want.max(1.0), "length {got} against {want}");

@@ -14,10 +14,10 @@
 
 mod support;
 
-use locus_kernel::{Brep, Curve, Point3};
+use locus_kernel::{Curve, Point3};
 use serde_json::Value;
 use support::breps::brep;
-use support::{Failures, num, triple};
+use support::{Failures, num, triple, worst_distance};
 
 /// The tolerance the intersections are computed with.
 const TOLERANCE: f64 = 1e-9;
@@ -32,24 +32,6 @@ fn load() -> Value {
     let text = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
     serde_json::from_str(&text).unwrap_or_else(|e| panic!("cannot parse {}: {e}", path.display()))
-}
-
-/// The largest distance from points along the curves to the B-rep's faces.
-fn worst_distance(curves: &[Curve], brep: &Brep) -> f64 {
-    let mut worst: f64 = 0.0;
-    for c in curves {
-        for k in 0..=32 {
-            let p = c.point_at(c.domain().parameter_at(k as f64 / 32.0));
-            let d = brep
-                .faces()
-                .iter()
-                .filter_map(|f| f.surface.closest_point(p).ok())
-                .map(|cp| cp.distance)
-                .fold(f64::INFINITY, f64::min);
-            worst = worst.max(d);
-        }
-    }
-    worst
 }
 
 /// The tight box of the curves, from dense samples.

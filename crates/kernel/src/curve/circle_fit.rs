@@ -9,6 +9,7 @@
 //! The circle lies in the fitted plane, centred at the fitted centre, its x axis the plane's;
 //! the deviation is the largest distance in space from a point to the circle.
 
+use crate::geometry::small_linear::solve_dense;
 use crate::{Circle, Error, Plane, Point3, Result, Vector3};
 
 /// Gauss–Newton iterations at most.
@@ -142,38 +143,15 @@ fn algebraic(points: &[(f64, f64)]) -> Result<(f64, f64, f64)> {
     Ok((mx + cu, my + cv, r2.sqrt()))
 }
 
-/// Solves the symmetric 3 × 3 system by Gaussian elimination with partial pivoting.
-fn solve3(mut m: [[f64; 3]; 3], mut r: [f64; 3]) -> Option<[f64; 3]> {
+/// Solves a 3 × 3 normal system, `None` when it is singular to rounding (a pivot below 1e-14
+/// of its largest entry).
+fn solve3(m: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
     let scale = m
         .iter()
         .flatten()
         .fold(0.0f64, |a, x| a.max(x.abs()))
         .max(f64::MIN_POSITIVE);
-    for col in 0..3 {
-        let pivot = (col..3).max_by(|&i, &j| m[i][col].abs().total_cmp(&m[j][col].abs()))?;
-        if m[pivot][col].is_nan() || m[pivot][col].abs() <= 1e-14 * scale {
-            return None;
-        }
-        m.swap(col, pivot);
-        r.swap(col, pivot);
-        let pivot_row = m[col];
-        for row in col + 1..3 {
-            let f = m[row][col] / pivot_row[col];
-            for (x, p) in m[row].iter_mut().zip(pivot_row).skip(col) {
-                *x -= f * p;
-            }
-            r[row] -= f * r[col];
-        }
-    }
-    let mut x = [0.0; 3];
-    for row in (0..3).rev() {
-        let mut s = r[row];
-        for k in row + 1..3 {
-            s -= m[row][k] * x[k];
-        }
-        x[row] = s / m[row][row];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
+    solve_dense(m, r, 1e-14 * scale)
 }
 
 #[cfg(test)]

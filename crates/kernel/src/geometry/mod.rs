@@ -9,5 +9,6 @@ pub(crate) mod oriented_box_boundary;
 pub(crate) mod plane;
 pub(crate) mod plane_fit;
 pub(crate) mod point;
+pub(crate) mod small_linear;
 pub mod tolerance;
 pub(crate) mod vector;

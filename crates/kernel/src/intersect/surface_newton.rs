@@ -10,6 +10,7 @@
 //! surface's edges, at its corners and at the curve's ends are found exactly. A backtracking line
 //! search keeps `F` from rising by more than its rounding.
 
+use crate::geometry::small_linear::solve_dense;
 use crate::intersect::patch::Patch;
 use crate::intersect::piece::Piece;
 use crate::{Point3, Vector3};
@@ -128,42 +129,16 @@ fn damped_step(columns: &[Vector3; 3], g: &[f64; 3], free: &[bool; 3]) -> Option
     for (i, row) in m.iter_mut().enumerate().take(n) {
         row[i] += damping;
     }
-    let solution = solve(&mut m, &mut b, n)?;
+    // The fixed coordinates' rows and columns are the identity, so their solution is zero.
+    for (i, row) in m.iter_mut().enumerate().skip(n) {
+        row[i] = 1.0;
+    }
+    let solution = solve_dense(m, b, 0.0)?;
     let mut step = [0.0; 3];
     for (i, &a) in index.iter().enumerate() {
         step[a] = solution[i];
     }
     step.iter().all(|s| s.is_finite()).then_some(step)
-}
-
-/// Solves the symmetric positive definite system of size `n` by Gaussian elimination with
-/// partial pivoting.
-fn solve(m: &mut [[f64; 3]; 3], b: &mut [f64; 3], n: usize) -> Option<[f64; 3]> {
-    for col in 0..n {
-        let pivot = (col..n).max_by(|&i, &j| m[i][col].abs().total_cmp(&m[j][col].abs()))?;
-        if m[pivot][col] == 0.0 || !m[pivot][col].is_finite() {
-            return None;
-        }
-        m.swap(col, pivot);
-        b.swap(col, pivot);
-        for row in col + 1..n {
-            let factor = m[row][col] / m[col][col];
-            let top = m[col];
-            for (value, above) in m[row][col..n].iter_mut().zip(&top[col..n]) {
-                *value -= factor * above;
-            }
-            b[row] -= factor * b[col];
-        }
-    }
-    let mut x = [0.0; 3];
-    for row in (0..n).rev() {
-        let mut sum = b[row];
-        for k in row + 1..n {
-            sum -= m[row][k] * x[k];
-        }
-        x[row] = sum / m[row][row];
-    }
-    Some(x)
 }
 
 /// A start for [`closest_curve_surface`] on a nearly straight piece and a nearly flat patch:

@@ -36,6 +36,7 @@
 //! curve is long is a touching point too. A degenerate side (a pole, where `nA` vanishes) ends a
 //! trace as well.
 
+use crate::geometry::small_linear::solve_dense;
 use crate::intersect::hermite_fit::{
     TracePoint, bezier_point, distance_to_segment, hermite_segment,
 };
@@ -406,35 +407,6 @@ fn control_points(x: &Patch) -> impl Iterator<Item = Point3> + '_ {
     (0..x.nu).flat_map(move |i| (0..x.nv).map(move |j| x.point(i, j)))
 }
 
-/// Solves the 4 × 4 system `m·x = r` by Gaussian elimination with partial pivoting.
-fn solve4(mut m: [[f64; 4]; 4], mut r: [f64; 4]) -> Option<[f64; 4]> {
-    for col in 0..4 {
-        let pivot = (col..4).max_by(|&i, &j| m[i][col].abs().total_cmp(&m[j][col].abs()))?;
-        if m[pivot][col].abs() < 1e-300 || !m[pivot][col].is_finite() {
-            return None;
-        }
-        m.swap(col, pivot);
-        r.swap(col, pivot);
-        let pivot_row = m[col];
-        for row in col + 1..4 {
-            let f = m[row][col] / pivot_row[col];
-            for (x, p) in m[row].iter_mut().zip(pivot_row).skip(col) {
-                *x -= f * p;
-            }
-            r[row] -= f * r[col];
-        }
-    }
-    let mut x = [0.0; 4];
-    for row in (0..4).rev() {
-        let mut s = r[row];
-        for k in row + 1..4 {
-            s -= m[row][k] * x[k];
-        }
-        x[row] = s / m[row][row];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
 impl Tracer<'_> {
     /// The points and first derivatives of both surfaces.
     fn eval(&self, x: &X) -> [(Point3, Vector3, Vector3); 2] {
@@ -583,7 +555,7 @@ impl Tracer<'_> {
             for (i, row) in m.iter_mut().enumerate() {
                 row[i] += 1e-12 * trace;
             }
-            let step = solve4(m, rhs)?;
+            let step = solve_dense(m, rhs, 1e-300)?;
             let before = x;
             for k in 0..4 {
                 x[k] -= step[k];
@@ -617,7 +589,7 @@ impl Tracer<'_> {
                 [au.z, av.z, -bu.z, -bv.z],
                 row,
             ];
-            let step = solve4(m, [d.x, d.y, d.z, g])?;
+            let step = solve_dense(m, [d.x, d.y, d.z, g], 1e-300)?;
             for k in 0..4 {
                 x[k] -= step[k];
             }

@@ -8,7 +8,7 @@
 
 pub mod breps;
 
-use locus_kernel::{Curve, Plane, Point3};
+use locus_kernel::{Brep, Curve, Plane, Point3};
 use serde_json::Value;
 
 /// Loads one oracle file (`opennurbs-cases.json` or `occt-cases.json`) as JSON, from the
@@ -131,4 +131,22 @@ pub fn signed_area(c: &Curve, plane: &Plane) -> f64 {
 /// The area a closed planar curve encloses ([`signed_area`] without its sign).
 pub fn enclosed_area(c: &Curve, plane: &Plane) -> f64 {
     signed_area(c, plane).abs()
+}
+
+/// The largest distance from points along the curves (65 per curve) to the B-rep's faces.
+pub fn worst_distance(curves: &[Curve], brep: &Brep) -> f64 {
+    let mut worst: f64 = 0.0;
+    for c in curves {
+        for k in 0..=64 {
+            let p = c.point_at(c.domain().parameter_at(k as f64 / 64.0));
+            let d = brep
+                .faces()
+                .iter()
+                .filter_map(|f| f.surface.closest_point(p).ok())
+                .map(|cp| cp.distance)
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+    }
+    worst
 }
