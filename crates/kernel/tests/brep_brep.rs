@@ -187,6 +187,24 @@ fn a_brep_with_itself_is_flagged_coincident() {
 }
 
 #[test]
+fn sheets_through_a_spheres_poles_give_whole_circles() {
+    // Sphere parameters collapse at the poles; the curves still pass them and close.
+    let ball = sphere(0.0, 0.0, 0.0, 2.0);
+    for normal in [
+        Vector3::X,
+        Vector3::new(1.0, 1.0, 0.0),
+        Vector3::new(-0.3, 1.0, 0.0),
+    ] {
+        let plane = Plane::from_normal(Point3::ORIGIN, normal).unwrap();
+        let x = ball.intersect_brep(&sheet(&plane, 5.0), TOL).unwrap();
+        assert_eq!(x.curves.len(), 1, "{normal:?}: {:?}", x.curves);
+        assert!(x.curves[0].is_closed());
+        assert!((x.curves[0].length() - 4.0 * PI).abs() < 1e-9, "{normal:?}");
+        assert!(x.points.is_empty());
+    }
+}
+
+#[test]
 fn a_bad_tolerance_is_an_error() {
     let a = sphere(0.0, 0.0, 0.0, 1.0);
     assert!(a.intersect_brep(&a, 0.0).is_err());
