@@ -148,7 +148,14 @@ impl NurbsCurve {
             return 0.0;
         }
         let whole = self.panel(a, b);
-        self.adaptive(a, b, whole, tol, 0)
+        // The tolerance cannot go below what rounding leaves of the span's length: a few ulps
+        // of it, and, where the span is narrow beside the size of its parameters, the rounding
+        // of the parameters themselves (`ε·|t| / (b − a)` of the span). Below that no
+        // bisection can meet it, and the quadrature would bisect to `MAX_DEPTH` (16M panels)
+        // chasing noise.
+        let magnitude = a.abs().max(b.abs());
+        let noise = NOISE_FLOOR_ULPS * f64::EPSILON * whole.abs() * (1.0 + magnitude / (b - a));
+        self.adaptive(a, b, whole, tol.max(noise), 0)
     }
 
     /// A quick estimate of the length (one panel per span), used to turn relative tolerances
@@ -377,6 +384,35 @@ mod tests {
         // ∫ x^18 over [−1, 1] = 2/19, exact for 10 nodes (degree ≤ 19).
         let s: f64 = x.iter().zip(w).map(|(x, w)| w * x.powi(18)).sum();
         assert!((s - 2.0 / 19.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn a_span_narrow_beside_its_parameters_is_integrated_to_its_rounding() {
+        // Two cubic Bézier pieces: a tiny one (1e-9 wide) at parameters near 1e6, where the
+        // parameters' own rounding (ε·1e6 / 1e-9, about 2e-1 of the span) is far above the
+        // quadrature's 1e-12, and a long one (its rounding about 2e-10). Shifting the knots to
+        // 0 gives the same curve without that noise: the lengths agree to the noise, and the
+        // quadrature stops there instead of bisecting 2²⁴ times.
+        let points = vec![
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1e-9, 0.2e-9, 0.0),
+            Point3::new(2e-9, 0.5e-9, 0.0),
+            Point3::new(3e-9, 0.4e-9, 0.0),
+            Point3::new(1.0, 0.5, 0.0),
+            Point3::new(2.0, -0.5, 0.0),
+            Point3::new(3.0, 0.0, 0.0),
+        ];
+        let at = |origin: f64| {
+            let k = [origin, origin + 1e-9, origin + 1.0];
+            NurbsCurve::new_non_rational(
+                3,
+                points.clone(),
+                vec![k[0], k[0], k[0], k[1], k[1], k[1], k[2], k[2], k[2]],
+            )
+            .unwrap()
+        };
+        let (far, near) = (at(1e6).length(), at(0.0).length());
+        assert!((far - near).abs() <= 1e-9 * near, "{far} {near}");
     }
 
     #[test]
