@@ -28,6 +28,7 @@
 //! assert_eq!(Vector3::new(4.0, 3.0, 0.0).length(), 5.0);
 //! ```
 
+mod boolean;
 mod brep;
 mod curve;
 mod error;
@@ -37,6 +38,7 @@ mod mesh;
 mod surface;
 mod transform;
 
+pub use crate::boolean::BooleanOperation;
 pub use crate::brep::mass::{AreaProperties, VolumeProperties};
 pub use crate::brep::pipe::PipeCaps;
 pub use crate::brep::sweep::{MAX_SWEEP_PROFILES, SweepMiter};
@@ -85,6 +87,7 @@ pub use crate::geometry::tolerance;
 pub use crate::geometry::vector::{Parallelism, Vector3};
 pub use crate::intersect::brep_brep::BrepIntersection;
 pub use crate::intersect::brep_curve::{BrepCurveHit, BrepCurveIntersections, BrepCurveOverlap};
+pub use crate::intersect::brep_inside::BrepContainment;
 pub use crate::intersect::brep_plane::{
     BrepSection, ContourSection, MAX_CONTOUR_PLANES, contour_planes,
 };

@@ -235,7 +235,7 @@ impl Brep {
 }
 
 /// All the parts of several B-reps in one, indices shifted.
-fn concatenate<'a>(breps: impl Iterator<Item = &'a Brep>) -> Brep {
+pub(crate) fn concatenate<'a>(breps: impl Iterator<Item = &'a Brep>) -> Brep {
     let mut out = Brep::default();
     for b in breps {
         let (nf, nl, nt, ne, nv) = (

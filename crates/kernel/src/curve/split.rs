@@ -224,7 +224,7 @@ fn polyline_piece(
 /// The curve that traces `a` and then `b`, two clamped curves of the same degree where `b`
 /// starts (in space) where `a` ends. `b`'s knots are shifted to continue `a`'s domain; the joint
 /// is a knot of full multiplicity.
-fn join_clamped(a: &NurbsCurve, b: &NurbsCurve) -> Result<NurbsCurve> {
+pub(crate) fn join_clamped(a: &NurbsCurve, b: &NurbsCurve) -> Result<NurbsCurve> {
     let p = a.degree();
     if b.degree() != p {
         return Err(Error::InvalidInput(format!(

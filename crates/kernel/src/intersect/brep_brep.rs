@@ -37,21 +37,21 @@ pub struct BrepIntersection {
 }
 
 /// One face of one of the two B-reps, with what the intersection needs of it.
-struct Face<'a> {
-    brep: &'a Brep,
-    surface: &'a NurbsSurface,
-    region: FaceRegion,
+pub(crate) struct Face<'a> {
+    pub(crate) brep: &'a Brep,
+    pub(crate) surface: &'a NurbsSurface,
+    pub(crate) region: FaceRegion,
 }
 
 impl Face<'_> {
-    fn contains(&self, p: Point3, uv: (f64, f64), tolerance: f64) -> bool {
+    pub(crate) fn contains(&self, p: Point3, uv: (f64, f64), tolerance: f64) -> bool {
         self.region
             .contains(self.brep, self.surface, p, Some(uv), tolerance)
     }
 
     /// The points where this face's edges cross `surface`, and the ends of the stretches that
     /// lie in it.
-    fn edge_crossings(&self, surface: &NurbsSurface, tolerance: f64) -> Vec<Point3> {
+    pub(crate) fn edge_crossings(&self, surface: &NurbsSurface, tolerance: f64) -> Vec<Point3> {
         let mut out = Vec::new();
         for &e in self.region.edges() {
             let edge = Curve::Nurbs(self.brep.edges()[e].curve.clone());
@@ -132,7 +132,7 @@ impl Brep {
     }
 }
 
-fn faces_of(brep: &Brep) -> Vec<Face<'_>> {
+pub(crate) fn faces_of(brep: &Brep) -> Vec<Face<'_>> {
     (0..brep.faces().len())
         .map(|f| Face {
             brep,
@@ -142,7 +142,7 @@ fn faces_of(brep: &Brep) -> Vec<Face<'_>> {
         .collect()
 }
 
-fn boxes_meet(a: &crate::BoundingBox, b: &crate::BoundingBox, gap: f64) -> bool {
+pub(crate) fn boxes_meet(a: &crate::BoundingBox, b: &crate::BoundingBox, gap: f64) -> bool {
     let (a0, a1, b0, b1) = (a.min, a.max, b.min, b.max);
     a0.x <= b1.x + gap
         && b0.x <= a1.x + gap

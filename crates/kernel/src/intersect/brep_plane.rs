@@ -343,7 +343,7 @@ pub(crate) fn runs_inside(
 }
 
 /// The distance from `x` to the segment from `p` along `d`.
-fn segment_distance(x: Point3, p: Point3, d: Vector3) -> f64 {
+pub(crate) fn segment_distance(x: Point3, p: Point3, d: Vector3) -> f64 {
     let l = d.length_squared();
     let t = if l > 0.0 {
         ((x - p).dot(d) / l).clamp(0.0, 1.0)

@@ -13,6 +13,7 @@
 pub(crate) mod bernstein;
 pub(crate) mod brep_brep;
 pub(crate) mod brep_curve;
+pub(crate) mod brep_inside;
 pub(crate) mod brep_plane;
 pub(crate) mod curve_curve;
 pub(crate) mod curve_plane;
