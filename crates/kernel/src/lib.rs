@@ -39,6 +39,7 @@ mod surface;
 mod transform;
 
 pub use crate::boolean::BooleanOperation;
+pub use crate::boolean::cuts::TRACE_PRECISION;
 pub use crate::brep::mass::{AreaProperties, VolumeProperties};
 pub use crate::brep::pipe::PipeCaps;
 pub use crate::brep::sweep::{MAX_SWEEP_PROFILES, SweepMiter};

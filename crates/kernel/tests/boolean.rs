@@ -230,3 +230,22 @@ fn report(label: &str, breps: &[Brep]) {
         }
     }
 }
+
+#[test]
+fn a_pocket_flush_with_the_top_face() {
+    // The second box shares part of the first's top face: the pieces lying on each other
+    // face the same way and are dropped from the difference.
+    let a = cuboid([0.0, 2.0], [0.0, 2.0], [0.0, 2.0]);
+    let b = cuboid([0.5, 1.5], [0.5, 1.5], [1.0, 2.0]);
+    let r = a.boolean(&b, BooleanOperation::Difference, 1e-3).unwrap();
+    assert_eq!(r.len(), 1);
+    assert!(all_solid(&r));
+    assert_eq!(r[0].faces().len(), 11);
+    assert!((volume(&r) - 7.0).abs() < 1e-12, "{}", volume(&r));
+    let u = a.boolean(&b, BooleanOperation::Union, 1e-3).unwrap();
+    assert!(
+        all_solid(&u) && (volume(&u) - 8.0).abs() < 1e-12,
+        "{}",
+        volume(&u)
+    );
+}

@@ -116,7 +116,9 @@
 //!   ([`intersect::section`]) Brep | Brep \[BBX\].
 //! - Shape ([`curve::regions`]): Region Union \[RUnion\], Region Intersection \[RInt\],
 //!   Region Difference \[RDiff\] (booleans of planar regions, by the kernel's
-//!   `Curve::region_boolean`).
+//!   `Curve::region_boolean`); ([`intersect::shape`]) Solid Union \[SUnion\], Solid
+//!   Difference \[SDiff\], Split Brep \[Split\] (the kernel's `Brep::boolean` and
+//!   `Brep::split_by_brep`), and Point In Brep \[BrepInc\] (Surface › Analysis).
 //!
 //! **Script** ([`script`])
 //! - Python Script \[Python\] (Grasshopper's GhPython, in Maths › Script there): a Python

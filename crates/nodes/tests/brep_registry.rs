@@ -1,6 +1,7 @@
 //! Every box and B-rep node of the Surface category and the Box, Brep, Geometry and Transform
 //! parameters are registered under their ids, in the category and subcategory they belong to.
 
+use locus_nodes::intersect::shape;
 use locus_nodes::params::brep as params;
 use locus_nodes::surface::{bounding_box, box_nodes, brep, brep_analysis};
 use locus_runtime::NodeRegistry;
@@ -23,6 +24,10 @@ fn box_and_brep_ids_are_registered() {
         (brep::SINGULAR_POINTS, "Surface", "Analysis"),
         (brep_analysis::AREA, "Surface", "Analysis"),
         (brep_analysis::VOLUME, "Surface", "Analysis"),
+        (shape::SOLID_UNION, "Intersect", "Shape"),
+        (shape::SOLID_DIFFERENCE, "Intersect", "Shape"),
+        (shape::SPLIT_BREP, "Intersect", "Shape"),
+        (shape::POINT_IN_BREP, "Surface", "Analysis"),
         (params::BOX, "Params", "Geometry"),
         (params::BREP, "Params", "Geometry"),
         (params::GEOMETRY, "Params", "Geometry"),
@@ -50,6 +55,10 @@ fn box_and_brep_ids_are_registered() {
         (brep::BREP_JOIN, "Join"),
         (brep::SINGULAR_POINTS, "Sing"),
         (params::GEOMETRY, "Geo"),
+        (shape::SOLID_UNION, "SUnion"),
+        (shape::SOLID_DIFFERENCE, "SDiff"),
+        (shape::SPLIT_BREP, "Split"),
+        (shape::POINT_IN_BREP, "BrepInc"),
     ] {
         assert_eq!(
             registry.get(id).map(|t| t.nickname.as_str()),

@@ -7,6 +7,7 @@ pub mod mathematical;
 pub mod mesh;
 pub mod physical;
 pub mod section;
+pub mod shape;
 pub mod surface_curve;
 
 use locus_runtime::NodeRegistry;
@@ -22,5 +23,6 @@ pub fn register(registry: &mut NodeRegistry) {
     mesh::register(registry);
     physical::register(registry);
     section::register(registry);
+    shape::register(registry);
     surface_curve::register(registry);
 }
