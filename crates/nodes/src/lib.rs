@@ -91,8 +91,8 @@
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
 //!
 //! **Surface** ([`surface`])
-//! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Cylinder \[Cyl\], Cone, Plane Surface
-//!   \[PlaneSrf\].
+//! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Sphere Fit \[SFit\], Cylinder \[Cyl\],
+//!   Cone, Plane Surface \[PlaneSrf\].
 //! - Freeform ([`surface::freeform`]): Surface From Points \[SrfGrid\]; ([`surface::lofting`])
 //!   Ruled Surface \[RuleSrf\], Loft (normal, loose, tight, straight, uniform; closed; seams
 //!   adjusted), Loft Options \[Loft Opt\], Revolution \[RevSrf\].

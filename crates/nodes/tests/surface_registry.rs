@@ -11,6 +11,7 @@ fn surface_ids_are_registered() {
     locus_nodes::register(&mut registry);
     let ids = [
         (primitive::SPHERE, "Primitive"),
+        (primitive::SPHERE_FIT, "Primitive"),
         (primitive::CYLINDER, "Primitive"),
         (primitive::CONE, "Primitive"),
         (primitive::PLANE_SURFACE, "Primitive"),
