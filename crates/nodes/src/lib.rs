@@ -69,7 +69,8 @@
 //! **Transform** ([`transform`])
 //! - Euclidean ([`transform::euclidean`]): Move, Rotate, Rotate Axis \[RotAx\], Rotate 3D
 //!   \[Rot3D\], Mirror, Orient.
-//! - Affine ([`transform::affine`]): Scale, Scale NU, Shear, Project \[Proj\].
+//! - Affine ([`transform::affine`]): Scale, Scale NU, Shear, Project \[Proj\], Orient Direction
+//!   \[Orient\].
 //! - Util ([`transform::util`]): Transform, Compound \[Comp\], Inverse Transform \[Inverse\],
 //!   Deconstruct Transform \[DeXform\], Construct Transform \[Xform\]; all geometry goes
 //!   through [`transform::apply::transform_value`].
