@@ -99,7 +99,7 @@
 //!   adjusted), Loft Options \[Loft Opt\], Revolution \[RevSrf\].
 //! - Analysis ([`surface::analysis`]): Evaluate Surface \[EvalSrf\], Surface Closest Point
 //!   \[Srf CP\], Principal Curvature \[Curvature\], Surface Curvature \[Curvature\].
-//! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].
+//! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\], Flip (surfaces).
 //! - The Surface parameter \[Srf\] is in [`params::surface`].
 //! - Boxes ([`surface::box_nodes`], [`surface::bounding_box`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
 //!   \[Box\], Box Rectangle \[BoxRec\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct

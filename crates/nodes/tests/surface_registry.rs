@@ -27,6 +27,7 @@ fn surface_ids_are_registered() {
         (analysis::SURFACE_CURVATURE, "Analysis"),
         (util::DIVIDE_SURFACE, "Util"),
         (util::ISO_CURVE, "Util"),
+        (util::FLIP_SURFACE, "Util"),
     ];
     for (id, subcategory) in ids {
         let t = registry
