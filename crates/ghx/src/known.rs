@@ -143,6 +143,11 @@ pub const KNOWN: &[(&str, &str, Special)] = &[
         Special::Display,
     ),
     (
+        "0ad9f1ab-2204-45bb-b282-474469e2fa7b",
+        "Point Order",
+        Special::Display,
+    ),
+    (
         "2b69bf71-4e69-43aa-b7be-4f6ce7e45bef",
         "Quick Graph",
         Special::Display,

@@ -118,5 +118,6 @@ pub use crate::surface::direction::{SurfaceDirection, SurfaceSide};
 pub use crate::surface::forms::{Cone, Cylinder, Sphere};
 pub use crate::surface::loft::{LoftType, MAX_LOFT_SECTIONS, align_loft_sections};
 pub use crate::surface::offset::MAX_OFFSET_GRID;
+pub use crate::surface::sphere_fit::SphereFit;
 pub use crate::surface::sweep::MAX_SWEEP_SPANS;
 pub use crate::transform::Transform;

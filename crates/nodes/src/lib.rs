@@ -69,7 +69,8 @@
 //! **Transform** ([`transform`])
 //! - Euclidean ([`transform::euclidean`]): Move, Rotate, Rotate Axis \[RotAx\], Rotate 3D
 //!   \[Rot3D\], Mirror, Orient.
-//! - Affine ([`transform::affine`]): Scale, Scale NU, Shear, Project \[Proj\].
+//! - Affine ([`transform::affine`]): Scale, Scale NU, Shear, Project \[Proj\], Orient Direction
+//!   \[Orient\].
 //! - Util ([`transform::util`]): Transform, Compound \[Comp\], Inverse Transform \[Inverse\],
 //!   Deconstruct Transform \[DeXform\], Construct Transform \[Xform\]; all geometry goes
 //!   through [`transform::apply::transform_value`].
@@ -91,14 +92,14 @@
 //! - The Curve parameter \[Crv\] is in [`params::curve`].
 //!
 //! **Surface** ([`surface`])
-//! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Cylinder \[Cyl\], Cone, Plane Surface
-//!   \[PlaneSrf\].
+//! - Primitive ([`surface::primitive`]): Sphere \[Sph\], Sphere Fit \[SFit\], Cylinder \[Cyl\],
+//!   Cone, Plane Surface \[PlaneSrf\].
 //! - Freeform ([`surface::freeform`]): Surface From Points \[SrfGrid\]; ([`surface::lofting`])
 //!   Ruled Surface \[RuleSrf\], Loft (normal, loose, tight, straight, uniform; closed; seams
 //!   adjusted), Loft Options \[Loft Opt\], Revolution \[RevSrf\].
 //! - Analysis ([`surface::analysis`]): Evaluate Surface \[EvalSrf\], Surface Closest Point
 //!   \[Srf CP\], Principal Curvature \[Curvature\], Surface Curvature \[Curvature\].
-//! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\].
+//! - Util ([`surface::util`]): Divide Surface \[SDivide\], Iso Curve \[Iso\], Flip (surfaces).
 //! - The Surface parameter \[Srf\] is in [`params::surface`].
 //! - Boxes ([`surface::box_nodes`], [`surface::bounding_box`]): Box 2Pt \[Box\], Center Box \[Box\], Domain Box
 //!   \[Box\], Box Rectangle \[BoxRec\], Bounding Box \[BBox\] (Primitive); Box Properties \[BoxProp\], Deconstruct

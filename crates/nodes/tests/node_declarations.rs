@@ -156,6 +156,7 @@ fn vector_transform_and_geometry_params_ids_are_registered() {
         affine::SCALE_NU,
         affine::SHEAR,
         affine::PROJECT,
+        affine::ORIENT_DIRECTION,
         util::TRANSFORM,
         util::COMPOUND,
         util::INVERSE_TRANSFORM,

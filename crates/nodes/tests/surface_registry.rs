@@ -11,6 +11,7 @@ fn surface_ids_are_registered() {
     locus_nodes::register(&mut registry);
     let ids = [
         (primitive::SPHERE, "Primitive"),
+        (primitive::SPHERE_FIT, "Primitive"),
         (primitive::CYLINDER, "Primitive"),
         (primitive::CONE, "Primitive"),
         (primitive::PLANE_SURFACE, "Primitive"),
@@ -26,6 +27,7 @@ fn surface_ids_are_registered() {
         (analysis::SURFACE_CURVATURE, "Analysis"),
         (util::DIVIDE_SURFACE, "Util"),
         (util::ISO_CURVE, "Util"),
+        (util::FLIP_SURFACE, "Util"),
     ];
     for (id, subcategory) in ids {
         let t = registry

@@ -25,6 +25,7 @@ pub(crate) mod normal;
 pub(crate) mod offset;
 pub(crate) mod revolution;
 pub(crate) mod ruled;
+pub(crate) mod sphere_fit;
 pub(crate) mod subsurface;
 pub(crate) mod sweep;
 

@@ -1,4 +1,4 @@
-//! Surface › Primitive: Sphere, Cylinder, Cone and Plane Surface.
+//! Surface › Primitive: Sphere, Sphere Fit, Cylinder, Cone and Plane Surface.
 //!
 //! Every primitive outputs a NURBS surface in the exact form Rhino builds (see
 //! `locus_kernel::Sphere::to_nurbs` and friends), so that parameters, seams and singular sides
@@ -14,6 +14,8 @@ use locus_runtime::{DataType, NodeError, NodeRegistry, NodeType, Port, Shared};
 
 /// Id of [`sphere`].
 pub const SPHERE: &str = "surface.sphere";
+/// Id of [`sphere_fit`].
+pub const SPHERE_FIT: &str = "surface.sphere_fit";
 /// Id of [`cylinder`].
 pub const CYLINDER: &str = "surface.cylinder";
 /// Id of [`cone`].
@@ -23,7 +25,7 @@ pub const PLANE_SURFACE: &str = "surface.plane_surface";
 
 /// Registers the primitive nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [sphere(), cylinder(), cone(), plane_surface()] {
+    for t in [sphere(), sphere_fit(), cylinder(), cone(), plane_surface()] {
         registry.register(t);
     }
 }
@@ -107,6 +109,39 @@ pub fn sphere() -> NodeType {
             let r = positive_radius(*r)?;
             let sphere = Sphere::from_plane(plane, r)?;
             Ok(Shared::new(sphere.to_nurbs()?))
+        })
+}
+
+/// Sphere Fit \[SFit\]: the sphere that fits a list of points best.
+pub fn sphere_fit() -> NodeType {
+    primitive(SPHERE_FIT, "Sphere Fit", "SFit")
+        .gh_guid("e7ffb3af-2d77-4804-a260-755308bf8285")
+        .description(
+            "Fits a sphere to a 3D collection of points (Rhino's Sphere.FitSphereToPoints): the \
+             sphere that minimises the sum of squared distances from the points (algebraic fit \
+             refined by Gauss–Newton), exact for points on a sphere. Gives its centre, its \
+             radius and the sphere as a surface, oriented by the world axes as Sphere's is by \
+             World XY. Fewer than four points, or points in one plane (no single sphere), are \
+             an error; empty items are skipped.",
+        )
+        .input(
+            Port::new("Points", "P", DataType::Point)
+                .doc("The points to fit, at least four not in one plane.")
+                .list(),
+        )
+        .output(Port::new("Center", "C", DataType::Point).doc("The centre of the sphere."))
+        .output(Port::new("Radius", "R", DataType::Number).doc("The radius of the sphere."))
+        .output(
+            Port::new("Sphere", "S", DataType::Surface)
+                .doc("The fitted sphere, a NURBS surface as Sphere makes it."),
+        )
+        .solve(|s| {
+            let points: Vec<Point3> = s.list::<Point3>(0)?.present().copied().collect();
+            let fit = Sphere::fit(&points).map_err(|e| format!("input P: {e}"))?;
+            s.set(0, fit.sphere.center());
+            s.set(1, fit.sphere.radius);
+            s.set(2, Shared::new(fit.sphere.to_nurbs()?));
+            Ok(())
         })
 }
 
@@ -354,6 +389,58 @@ mod tests {
             .input(DataTree::from_item(flat))
             .run();
         assert!(errors(&r)[0].contains("input P"), "{:?}", r.messages);
+    }
+
+    #[test]
+    fn sphere_fit_gives_back_a_sphere_and_reports_bad_points() {
+        // The six points where the sphere of radius 2 about (1, -2, 3) meets its axes.
+        let c = Point3::new(1.0, -2.0, 3.0);
+        let points: Vec<Point3> = [
+            Vector3::X,
+            -Vector3::X,
+            Vector3::Y,
+            -Vector3::Y,
+            Vector3::Z,
+            -Vector3::Z,
+        ]
+        .iter()
+        .map(|&d| c + d * 2.0)
+        .collect();
+        let r = NodeCall::new(&sphere_fit())
+            .input(DataTree::from_list(points))
+            .run();
+        assert!(r.messages.is_empty(), "{:?}", r.messages);
+        match r.outputs[0].values().next().flatten() {
+            Some(Value::Point(p)) => assert!(p.distance(c) < EPS),
+            other => panic!("no centre: {other:?}"),
+        }
+        match r.outputs[1].values().next().flatten() {
+            Some(Value::Number(radius)) => assert!((radius - 2.0).abs() < EPS),
+            other => panic!("no radius: {other:?}"),
+        }
+        let s = surface(&r, 2);
+        for (u, v) in [(0.3, 0.2), (2.0, -1.0), (5.5, 1.4)] {
+            assert!((s.point_at(u, v).distance(c) - 2.0).abs() < EPS);
+        }
+
+        // Too few points, points on one circle (one plane), a NaN point: errors naming P.
+        let square = vec![
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.0, 1.0, 0.0),
+            Point3::new(-1.0, 0.0, 0.0),
+            Point3::new(0.0, -1.0, 0.0),
+        ];
+        let mut with_nan = square.clone();
+        with_nan.push(Point3::new(f64::NAN, 0.0, 1.0));
+        for bad in [square[..3].to_vec(), square, with_nan] {
+            let r = NodeCall::new(&sphere_fit())
+                .input(DataTree::from_list(bad))
+                .run();
+            let errors = errors(&r);
+            assert_eq!(errors.len(), 1, "{errors:?}");
+            assert!(errors[0].contains("input P"), "{errors:?}");
+            assert_eq!(r.outputs[2].values().next().flatten(), None);
+        }
     }
 
     #[test]

@@ -1,10 +1,10 @@
-//! Surface › Util: Divide Surface, Iso Curve, Offset Surface and Isotrim.
+//! Surface › Util: Divide Surface, Iso Curve, Offset Surface, Isotrim and Flip.
 //!
 //! Grasshopper files Iso Curve under Curve › Spline; here it sits with the other nodes that
 //! take a surface and a {uv} (**decision**, so that the Curve category stays as it is).
 
 use locus_kernel::tolerance::{DOCUMENT_TOLERANCE, ZERO_TOLERANCE};
-use locus_kernel::{Curve, Interval, Point3, SurfaceDirection, UvInterval, Vector3};
+use locus_kernel::{Curve, Interval, NurbsSurface, Point3, SurfaceDirection, UvInterval, Vector3};
 use locus_runtime::{
     Branch, DataTree, DataType, NodeError, NodeRegistry, NodeType, Port, Shared, Value,
     format_value,
@@ -20,6 +20,8 @@ pub const ISO_CURVE: &str = "surface.iso_curve";
 pub const OFFSET_SURFACE: &str = "surface.offset_surface";
 /// Id of [`isotrim`].
 pub const ISOTRIM: &str = "surface.isotrim";
+/// Id of [`flip_surface`].
+pub const FLIP_SURFACE: &str = "surface.flip";
 
 /// The largest number of points Divide Surface makes for one surface: (U + 1)·(V + 1).
 pub const MAX_GRID_POINTS: u64 = 10_000_000;
@@ -30,6 +32,7 @@ pub fn register(registry: &mut NodeRegistry) {
     registry.register(iso_curve());
     registry.register(offset_surface());
     registry.register(isotrim());
+    registry.register(flip_surface());
 }
 
 /// A division count: a positive integer.
@@ -223,6 +226,76 @@ pub fn offset_surface() -> NodeType {
         })
 }
 
+/// Parameter samples per direction for comparing a surface's normals with a guide's.
+const FLIP_SAMPLES: usize = 4;
+
+/// Whether `surface` faces against `guide`: its normals at the centres of a 4 × 4 grid of
+/// parameter cells, compared with the guide's normals at the closest points, point the other
+/// way on balance (their dot products sum to less than zero).
+fn faces_against(surface: &NurbsSurface, guide: &NurbsSurface) -> Result<bool, NodeError> {
+    let (du, dv) = (surface.domain_u(), surface.domain_v());
+    let mut agreement = 0.0;
+    for i in 0..FLIP_SAMPLES {
+        for j in 0..FLIP_SAMPLES {
+            let u = du.parameter_at((i as f64 + 0.5) / FLIP_SAMPLES as f64);
+            let v = dv.parameter_at((j as f64 + 0.5) / FLIP_SAMPLES as f64);
+            let Ok(normal) = surface.normal_at(u, v) else {
+                continue;
+            };
+            let cp = guide
+                .closest_point(surface.point_at(u, v))
+                .map_err(|e| NodeError(format!("input G: {e}")))?;
+            if let Ok(g) = guide.normal_at(cp.u, cp.v) {
+                agreement += normal.dot(g);
+            }
+        }
+    }
+    Ok(agreement < 0.0)
+}
+
+/// Flip \[Flip\]: a surface with its normals reversed, optionally only when it faces against a
+/// guide.
+pub fn flip_surface() -> NodeType {
+    NodeType::new(FLIP_SURFACE, "Flip", "Flip", "Surface")
+        .gh_guid("c3d1f2b8-8596-4e8d-8861-c28ba8ffb4f4")
+        .subcategory("Util")
+        .description(
+            "Flips the normals of a surface. Locus surfaces carry no orientation flag (Rhino \
+             flips a face's), so the flipped surface is the surface with u and v swapped \
+             (Rhino's Transpose): the same points, the domains exchanged, the normal reversed. \
+             With a guide surface the surface is flipped only when it faces against the guide: \
+             its normals at the centres of a 4 × 4 grid of parameter cells, compared with the \
+             guide's at the closest points, point the other way on balance.",
+        )
+        .input(surface_port("Surface to flip."))
+        .input(
+            Port::new("Guide", "G", DataType::Surface)
+                .doc("Optional guide surface whose normals the result follows.")
+                .optional(),
+        )
+        .output(surface_port("The flipped (or unchanged) surface."))
+        .output(
+            Port::new("Result", "R", DataType::Boolean).doc("True when the surface was flipped."),
+        )
+        .solve(|s| {
+            let surface = surface_input(s, 0)?;
+            let flip = if s.value(1).is_some() {
+                let guide = surface_input(s, 1)?;
+                faces_against(&surface, &guide)?
+            } else {
+                true
+            };
+            let out = if flip {
+                Shared::new(surface.transposed())
+            } else {
+                surface
+            };
+            s.set(0, out);
+            s.set(1, flip);
+            Ok(())
+        })
+}
+
 /// Isotrim \[SubSrf\]: the part of a surface over a rectangle of its parameters.
 pub fn isotrim() -> NodeType {
     NodeType::new(ISOTRIM, "Isotrim", "SubSrf", "Surface")
@@ -287,7 +360,7 @@ pub fn isotrim() -> NodeType {
 mod tests {
     use std::f64::consts::{FRAC_PI_2, TAU};
 
-    use locus_kernel::{Interval, NurbsSurface, Plane, Sphere};
+    use locus_kernel::{Plane, Sphere};
     use locus_runtime::{Level, NodeCall, TreePath, Value};
 
     use super::*;
@@ -509,5 +582,81 @@ mod tests {
                 r.messages[0].text
             );
         }
+    }
+
+    fn flip_result(r: &locus_runtime::NodeCallResult) -> (Shared<NurbsSurface>, bool) {
+        let surface = match r.outputs[0].values().next().flatten() {
+            Some(Value::Surface(s)) => s,
+            other => panic!("no surface: {other:?} {:?}", r.messages),
+        };
+        let flag = match r.outputs[1].values().next().flatten() {
+            Some(Value::Boolean(b)) => b,
+            other => panic!("no flag: {other:?}"),
+        };
+        (surface, flag)
+    }
+
+    #[test]
+    fn flip_reverses_the_normal_and_follows_a_guide() {
+        // World XY over [0, 2] × [0, 1]: normal +Z.
+        let plane = |p: Plane| {
+            Shared::new(
+                NurbsSurface::from_plane(&p, Interval::new(0.0, 2.0), Interval::UNIT).unwrap(),
+            )
+        };
+        let up = plane(Plane::WORLD_XY);
+        let r = NodeCall::new(&flip_surface())
+            .input(DataTree::from_item(up.clone()))
+            .run();
+        let (flipped, flag) = flip_result(&r);
+        assert!(flag);
+        let n = flipped.normal_at(0.5, 1.0).unwrap();
+        assert!((n.z + 1.0).abs() < 1e-12, "{n:?}");
+        assert!(flipped.point_at(0.5, 1.0).distance(up.point_at(1.0, 0.5)) < 1e-12);
+
+        // A guide below facing down: flipped; a guide facing up: kept.
+        let mut down = Plane::WORLD_XY;
+        down.origin = Point3::new(0.0, 0.0, -3.0);
+        down.y_axis = -down.y_axis;
+        down.z_axis = -down.z_axis;
+        let mut above = Plane::WORLD_XY;
+        above.origin = Point3::new(5.0, 5.0, 5.0);
+        for (guide, want) in [(plane(down), true), (plane(above), false)] {
+            let r = NodeCall::new(&flip_surface())
+                .input(DataTree::from_item(up.clone()))
+                .input(DataTree::from_item(guide))
+                .run();
+            let (out, flag) = flip_result(&r);
+            assert_eq!(flag, want);
+            let n = out
+                .normal_at(out.domain_u().mid(), out.domain_v().mid())
+                .unwrap();
+            assert!((n.z - if want { -1.0 } else { 1.0 }).abs() < 1e-12, "{n:?}");
+        }
+    }
+
+    #[test]
+    fn flip_reports_what_is_not_a_surface() {
+        let r = NodeCall::new(&flip_surface())
+            .input(DataTree::from_item(Point3::new(f64::NAN, 0.0, 0.0)))
+            .run();
+        let errors: Vec<_> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .collect();
+        assert_eq!(errors.len(), 1, "{:?}", r.messages);
+        assert!(errors[0].text.contains("input S"), "{errors:?}");
+        let r = NodeCall::new(&flip_surface())
+            .input(DataTree::from_item(sphere(1.0)))
+            .input(DataTree::from_item(1.5))
+            .run();
+        let errors: Vec<_> = r
+            .messages
+            .iter()
+            .filter(|m| m.level == Level::Error)
+            .collect();
+        assert_eq!(errors.len(), 1, "{:?}", r.messages);
+        assert!(errors[0].text.contains("input G"), "{errors:?}");
     }
 }

@@ -1,8 +1,8 @@
 //! Transform › Affine: transformations that keep lines straight and parallels parallel but may
-//! change lengths and angles: Scale, Scale NU, Shear and Project.
+//! change lengths and angles: Scale, Scale NU, Shear, Project and Orient Direction.
 
 use locus_kernel::tolerance::ZERO_TOLERANCE;
-use locus_kernel::{Plane, Point3, Transform};
+use locus_kernel::{Plane, Point3, Transform, Vector3};
 use locus_runtime::{DataType, NodeRegistry, NodeType, Port};
 
 use super::{finish, geometry_input, geometry_output, transform_node, transform_output};
@@ -15,10 +15,12 @@ pub const SCALE_NU: &str = "transform.scale_nu";
 pub const SHEAR: &str = "transform.shear";
 /// Id of [`project`].
 pub const PROJECT: &str = "transform.project";
+/// Id of [`orient_direction`].
+pub const ORIENT_DIRECTION: &str = "transform.orient_direction";
 
 /// Registers the Affine nodes.
 pub fn register(registry: &mut NodeRegistry) {
-    for t in [scale(), scale_nu(), shear(), project()] {
+    for t in [scale(), scale_nu(), shear(), project(), orient_direction()] {
         registry.register(t);
     }
 }
@@ -166,6 +168,78 @@ pub fn project() -> NodeType {
             let plane = *s.item::<Plane>(1)?;
             finish(s, Transform::planar_projection(&plane))
         })
+}
+
+/// Orient Direction \[Orient\]: moves, turns and scales geometry so that a point and a
+/// direction at it land on another point and direction.
+pub fn orient_direction() -> NodeType {
+    affine(ORIENT_DIRECTION, "Orient Direction", "Orient")
+        .gh_guid("1602b2cc-007c-4b79-8926-0067c6184e44")
+        .description(
+            "Orients geometry using directional constraints only: it moves point A onto point \
+             B, turns direction A onto direction B about B (the smallest rotation, about the \
+             axis A × B; a half turn for opposite directions), and scales uniformly about B by \
+             |B| / |A|, the ratio of the directions' lengths (they are not unitized, so unit \
+             vectors keep the size). A direction of zero length or a coordinate that is not \
+             finite is an error.",
+        )
+        .input(geometry_input("orient"))
+        .input(Port::new("Point A", "pA", DataType::Point).doc("The reference point."))
+        .input(
+            Port::new("Direction A", "dA", DataType::Vector)
+                .doc("The reference direction at point A; its length is the scale's reference."),
+        )
+        .input(Port::new("Point B", "pB", DataType::Point).doc("The target point."))
+        .input(
+            Port::new("Direction B", "dB", DataType::Vector)
+                .doc("The target direction at point B; its length over A's is the scale factor."),
+        )
+        .output(geometry_output("oriented"))
+        .output(transform_output())
+        .solve(|s| {
+            let point_a = *s.item::<Point3>(1)?;
+            let direction_a = *s.item::<Vector3>(2)?;
+            let point_b = *s.item::<Point3>(3)?;
+            let direction_b = *s.item::<Vector3>(4)?;
+            let xform = orient_direction_transform(point_a, direction_a, point_b, direction_b)?;
+            finish(s, xform)
+        })
+}
+
+/// The transform of [`orient_direction`]: translate A to B, turn direction A onto direction B
+/// about B, scale about B by |dB| / |dA|.
+fn orient_direction_transform(
+    point_a: Point3,
+    direction_a: Vector3,
+    point_b: Point3,
+    direction_b: Vector3,
+) -> Result<Transform, locus_runtime::NodeError> {
+    for (p, name) in [(point_a, "pA"), (point_b, "pB")] {
+        if !p.is_finite() {
+            return Err(
+                format!("input {name}: the point has a coordinate that is not finite").into(),
+            );
+        }
+    }
+    let mut lengths = [0.0; 2];
+    for (k, (v, name)) in [(direction_a, "dA"), (direction_b, "dB")]
+        .into_iter()
+        .enumerate()
+    {
+        let length = v.length();
+        if !length.is_finite() {
+            return Err(
+                format!("input {name}: the direction has a coordinate that is not finite").into(),
+            );
+        }
+        if length <= ZERO_TOLERANCE {
+            return Err(format!("input {name}: the direction has zero length").into());
+        }
+        lengths[k] = length;
+    }
+    let rotation = Transform::rotation_between(direction_a, direction_b, point_b)?;
+    let scale = Transform::scale(point_b, lengths[1] / lengths[0]);
+    Ok(scale * rotation * Transform::translation(point_b - point_a))
 }
 
 #[cfg(test)]
@@ -462,5 +536,71 @@ mod tests {
             .run();
         assert_error(&r, "degenerate");
         assert!(is_null(&r, 0));
+    }
+
+    #[test]
+    fn orient_direction_moves_turns_and_scales() {
+        // A = (1, 0, 0) with direction +X, B = (0, 0, 5) with direction 2·(+Y): the point
+        // (2, 0, 0), one unit along A's direction from A, goes two units along +Y from B.
+        let r = NodeCall::new(&orient_direction())
+            .input(DataTree::from_list(vec![
+                Value::Point(Point3::new(2.0, 0.0, 0.0)),
+                Value::Point(Point3::new(1.0, 1.0, 0.0)),
+            ]))
+            .input(DataTree::from_item(Point3::new(1.0, 0.0, 0.0)))
+            .input(DataTree::from_item(Vector3::new(1.0, 0.0, 0.0)))
+            .input(DataTree::from_item(Point3::new(0.0, 0.0, 5.0)))
+            .input(DataTree::from_item(Vector3::new(0.0, 2.0, 0.0)))
+            .run();
+        assert_clean(&r);
+        let out: Vec<Option<Value>> = r.outputs[0].values().collect();
+        let want = [Point3::new(0.0, 2.0, 5.0), Point3::new(-2.0, 0.0, 5.0)];
+        for (got, want) in out.iter().zip(want) {
+            match got {
+                Some(Value::Point(p)) => assert!(p.distance(want) < 1e-12, "{p:?} {want:?}"),
+                other => panic!("no point: {other:?}"),
+            }
+        }
+        // Opposite directions of equal length: a half turn about B.
+        let r = NodeCall::new(&orient_direction())
+            .input(DataTree::from_item(Point3::new(1.0, 0.0, 0.0)))
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .input(DataTree::from_item(Vector3::new(0.0, 0.0, 3.0)))
+            .input(DataTree::from_item(Point3::ORIGIN))
+            .input(DataTree::from_item(Vector3::new(0.0, 0.0, -3.0)))
+            .run();
+        match only_value(&r, 0) {
+            Value::Point(p) => {
+                assert!((p.distance(Point3::ORIGIN) - 1.0).abs() < 1e-12);
+                assert!(p.z.abs() < 1e-12);
+            }
+            other => panic!("no point: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn orient_direction_bad_input() {
+        let run = |da: Vector3, pb: Point3| {
+            NodeCall::new(&orient_direction())
+                .input(DataTree::from_item(Point3::ORIGIN))
+                .input(DataTree::from_item(Point3::ORIGIN))
+                .input(DataTree::from_item(da))
+                .input(DataTree::from_item(pb))
+                .input(DataTree::from_item(Vector3::new(0.0, 1.0, 0.0)))
+                .run()
+        };
+        let r = run(Vector3::ZERO, Point3::ORIGIN);
+        assert_error(&r, "input dA: the direction has zero length");
+        assert!(is_null(&r, 0) && is_null(&r, 1));
+        let r = run(Vector3::new(f64::NAN, 0.0, 1.0), Point3::ORIGIN);
+        assert_error(
+            &r,
+            "input dA: the direction has a coordinate that is not finite",
+        );
+        let r = run(Vector3::X, Point3::new(0.0, f64::INFINITY, 0.0));
+        assert_error(
+            &r,
+            "input pB: the point has a coordinate that is not finite",
+        );
     }
 }
