@@ -249,3 +249,40 @@ fn a_pocket_flush_with_the_top_face() {
         volume(&u)
     );
 }
+
+#[test]
+fn boxes_sharing_faces_as_in_a_real_dresser() {
+    // From mcneel-compute's hops dresser3.gh: a shelf less a side board flush with three of
+    // its faces, and a back panel less a shelf flush with its back.
+    let shelf = cuboid([0.0, 1000.0], [0.0, 300.0], [0.0, 19.0]);
+    let side = cuboid([0.0, 19.0], [0.0, 300.0], [7.0, 493.0]);
+    let r = shelf
+        .boolean(&side, BooleanOperation::Difference, 1e-3)
+        .unwrap();
+    assert_eq!(r.len(), 1);
+    assert!(all_solid(&r));
+    let expected = 1000.0 * 300.0 * 19.0 - 19.0 * 300.0 * 12.0;
+    assert!(
+        (volume(&r) - expected).abs() < 1e-12 * expected,
+        "{}",
+        volume(&r)
+    );
+    let top = 319.333_333_333_333_37;
+    let back = cuboid([7.0, 993.0], [294.0, 300.0], [7.0, top]);
+    let board = cuboid(
+        [10.0, 990.0],
+        [0.0, 300.0],
+        [307.333_333_333_333_37, 326.333_333_333_333_37],
+    );
+    let r = back
+        .boolean(&board, BooleanOperation::Difference, 1e-3)
+        .unwrap();
+    assert_eq!(r.len(), 1);
+    assert!(all_solid(&r));
+    let expected = 986.0 * 6.0 * (top - 7.0) - 980.0 * 6.0 * (top - 307.333_333_333_333_37);
+    assert!(
+        (volume(&r) - expected).abs() < 1e-12 * expected,
+        "{} vs {expected}",
+        volume(&r)
+    );
+}

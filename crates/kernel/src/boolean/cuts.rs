@@ -248,6 +248,16 @@ fn fit_parameters(
             &mut refined,
         );
     }
+    // Points that coincide (the end of a cut and the traced point beside it) would give a
+    // segment of no length.
+    let size = refined
+        .iter()
+        .map(|p| p.point.distance(refined[0].point))
+        .fold(0.0, f64::max);
+    refined.dedup_by(|b, a| a.point.distance(b.point) <= 1e-12 * size);
+    if refined.len() < 2 {
+        refined = vec![points[0], points[n - 1]];
+    }
     fit(&refined)
 }
 

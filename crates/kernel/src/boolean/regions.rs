@@ -84,24 +84,31 @@ impl Half {
     }
 }
 
-/// The unit direction of a curve along itself at its start (`start`) or end: its tangent, or
-/// the chord to a nearby point where the derivative vanishes.
+/// The unit direction of a curve along itself at its start (`start`) or end: the chord to a
+/// point a little way along it.
 fn end_direction(c: &NurbsCurve, start: bool) -> Vector3 {
+    // The chord to the nearest sample that is clearly away from the end: a derivative would
+    // follow a hook of rounding size left where a fitted end was moved onto its vertex.
     let d = c.domain();
-    let t = if start { d.t0 } else { d.t1 };
-    let v = c.derivative_at(t);
-    let v = Vector3::new(v.x, v.y, 0.0);
-    if v.length() > 1e-12 * d.length().max(1e-300) {
-        return v.normalize_or_zero();
+    let end = if start { d.t0 } else { d.t1 };
+    let p = c.point_at(end);
+    let size = c.points().iter().map(|q| q.distance(p)).fold(0.0, f64::max);
+    let mut fraction = 1.0 / 1024.0;
+    let mut best = Vector3::new(0.0, 0.0, 0.0);
+    for _ in 0..10 {
+        let s = if start { fraction } else { 1.0 - fraction };
+        let q = c.point_at(d.parameter_at(s));
+        let chord = if start { q - p } else { p - q };
+        let chord = Vector3::new(chord.x, chord.y, 0.0);
+        if chord.length() > 1e-9 * size {
+            best = chord;
+            if chord.length() > 1e-6 * size {
+                break;
+            }
+        }
+        fraction *= 2.0;
     }
-    let near = if start {
-        d.parameter_at(1e-3)
-    } else {
-        d.parameter_at(1.0 - 1e-3)
-    };
-    let (a, b) = (c.point_at(t), c.point_at(near));
-    let chord = if start { b - a } else { a - b };
-    Vector3::new(chord.x, chord.y, 0.0).normalize_or_zero()
+    best.normalize_or_zero()
 }
 
 /// The angle turned clockwise from `from` to `to`, in `[0, 2π)`.
