@@ -13,6 +13,17 @@ fn cuboid(x: [f64; 2], y: [f64; 2], z: [f64; 2]) -> Brep {
     Brep::from_box(&OrientedBox::new(Plane::WORLD_XY, i(x), i(y), i(z))).unwrap()
 }
 
+/// A capped cylinder of radius 0.5 along z from −1 to 2.
+fn rod() -> Brep {
+    let c = Cylinder::new(
+        Plane::from_normal(Point3::new(0.0, 0.0, -1.0), Vector3::new(0.0, 0.0, 1.0)).unwrap(),
+        0.5,
+        3.0,
+    )
+    .unwrap();
+    Brep::from_cylinder(&c, true).unwrap()
+}
+
 fn volume(breps: &[Brep]) -> f64 {
     breps.iter().map(|b| b.volume().unwrap()).sum()
 }
@@ -44,13 +55,7 @@ fn overlapping_cubes() {
 #[test]
 fn a_cylinder_drilled_through_a_box() {
     let a = cuboid([-2.0, 2.0], [-2.0, 2.0], [0.0, 1.0]);
-    let c = Cylinder::new(
-        Plane::from_normal(Point3::new(0.0, 0.0, -1.0), Vector3::new(0.0, 0.0, 1.0)).unwrap(),
-        0.5,
-        3.0,
-    )
-    .unwrap();
-    let b = Brep::from_cylinder(&c, true).unwrap();
+    let b = rod();
     let r = a.boolean(&b, BooleanOperation::Difference, TOL).unwrap();
     assert_eq!(r.len(), 1);
     assert!(all_solid(&r));
@@ -112,13 +117,7 @@ fn a_box_split_by_a_box() {
 #[test]
 fn a_capped_cylinder_split_by_a_slab_gives_three_parts_of_the_whole() {
     let slab = cuboid([-2.0, 2.0], [-2.0, 2.0], [0.0, 1.0]);
-    let c = Cylinder::new(
-        Plane::from_normal(Point3::new(0.0, 0.0, -1.0), Vector3::new(0.0, 0.0, 1.0)).unwrap(),
-        0.5,
-        3.0,
-    )
-    .unwrap();
-    let b = Brep::from_cylinder(&c, true).unwrap();
+    let b = rod();
     let parts = b.split_by_brep(&slab, TOL).unwrap();
     assert_eq!(parts.len(), 3);
     let mut areas: Vec<f64> = parts.iter().map(|p| p.area().unwrap()).collect();

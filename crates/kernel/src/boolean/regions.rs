@@ -4,7 +4,7 @@
 use std::f64::consts::TAU;
 
 use crate::boolean::face_split::Piece;
-use crate::brep::builders::Builder;
+use crate::brep::builders::{Builder, point_in_polygon, signed_area};
 use crate::brep::{Brep, LoopKind};
 use crate::{Error, NurbsCurve, Point3, Result, Vector3};
 
@@ -115,32 +115,6 @@ fn end_direction(c: &NurbsCurve, start: bool) -> Vector3 {
 fn clockwise_angle(from: Vector3, to: Vector3) -> f64 {
     let a = from.y.atan2(from.x) - to.y.atan2(to.x);
     a.rem_euclid(TAU)
-}
-
-fn signed_area(polygon: &[(f64, f64)]) -> f64 {
-    let n = polygon.len();
-    (0..n)
-        .map(|i| {
-            let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-            a.0 * b.1 - b.0 * a.1
-        })
-        .sum::<f64>()
-        / 2.0
-}
-
-fn point_in_polygon(p: (f64, f64), polygon: &[(f64, f64)]) -> bool {
-    let mut inside = false;
-    let n = polygon.len();
-    for i in 0..n {
-        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-        if (a.1 > p.1) != (b.1 > p.1) {
-            let x = a.0 + (p.1 - a.1) / (b.1 - a.1) * (b.0 - a.0);
-            if p.0 < x {
-                inside = !inside;
-            }
-        }
-    }
-    inside
 }
 
 /// The regions the fragments bound, as pieces.
