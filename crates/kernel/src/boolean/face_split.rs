@@ -276,32 +276,101 @@ pub(crate) fn split_face(
                 }
             };
         }
-        let uv = with_ends(&cut.uv, vertices[ids[0]].uv, vertices[ids[1]].uv)?;
-        let on_border = ids.iter().all(|&v| v < boundary_vertices)
-            && lies_on_border(brep, f, curve.point_at(curve.domain().mid()), tolerance);
-        let tiny = ids[0] == ids[1] && curve_span(curve) <= 10.0 * tolerance;
-        let duplicate = fragments.iter().any(|g| {
-            g.cut
-                && ((g.from, g.to) == (ids[0], ids[1]) || (g.from, g.to) == (ids[1], ids[0]))
-                && g.xyz.as_ref().is_some_and(|x| {
-                    x.closest_point(curve.point_at(curve.domain().mid()))
-                        .is_ok_and(|c| c.distance <= 10.0 * tolerance)
-                })
-        });
-        if on_border || tiny || duplicate {
-            continue;
+        // A cut may run along the border for a stretch (where the faces lie on each other):
+        // it is split at the border's vertices it passes, and the stretches along the border
+        // are dropped below.
+        let (ends3, ends_uv) = (curve.domain(), cut.uv.domain());
+        let mut stops: Vec<(f64, f64, usize)> = vec![(ends_uv.t0, ends3.t0, ids[0])];
+        for (v, vertex) in vertices.iter().enumerate().take(boundary_vertices) {
+            if ids.contains(&v) {
+                continue;
+            }
+            let Ok(c3) = curve.closest_point(vertex.point) else {
+                continue;
+            };
+            let inside = c3.distance <= tolerance
+                && curve.start_point().distance(vertex.point) > 10.0 * tolerance
+                && curve.end_point().distance(vertex.point) > 10.0 * tolerance;
+            if !inside {
+                continue;
+            }
+            let Ok(cuv) = cut
+                .uv
+                .closest_point(Point3::new(vertex.uv.0, vertex.uv.1, 0.0))
+            else {
+                continue;
+            };
+            stops.push((cuv.t, c3.t, v));
         }
+        stops.push((ends_uv.t1, ends3.t1, ids[1]));
+        stops[1..].sort_by(|x, y| x.0.total_cmp(&y.0));
+        for w in stops.windows(2) {
+            let ((u0, t0, a), (u1, t1, b)) = (w[0], w[1]);
+            let whole = stops.len() == 2;
+            let (piece_uv, piece) = if whole {
+                (cut.uv.clone(), curve.clone())
+            } else {
+                if !(u1 > u0 && t1 > t0) {
+                    continue;
+                }
+                (
+                    cut.uv.trim(Interval::new(u0, u1))?,
+                    curve.trim(Interval::new(t0, t1))?,
+                )
+            };
+            push_cut(
+                brep,
+                f,
+                &mut fragments,
+                &vertices,
+                boundary_vertices,
+                (piece_uv, piece),
+                [a, b],
+                tolerance,
+            )?;
+        }
+    }
+    drop_dangling(&mut fragments, vertices.len());
+    regions(brep, f, &vertices, &fragments, tolerance)
+}
+
+/// Adds a cut (or a stretch of one) from vertex `ids[0]` to `ids[1]` as a fragment, unless it
+/// runs along the face's border, stays at one point, or was added already.
+#[allow(clippy::too_many_arguments)]
+fn push_cut(
+    brep: &Brep,
+    f: usize,
+    fragments: &mut Vec<Fragment>,
+    vertices: &[Vertex],
+    boundary_vertices: usize,
+    (uv, curve): (NurbsCurve, NurbsCurve),
+    ids: [usize; 2],
+    tolerance: f64,
+) -> Result<()> {
+    let uv = with_ends(&uv, vertices[ids[0]].uv, vertices[ids[1]].uv)?;
+    let mid = curve.point_at(curve.domain().mid());
+    let on_border =
+        ids.iter().all(|&v| v < boundary_vertices) && lies_on_border(brep, f, mid, tolerance);
+    let tiny = ids[0] == ids[1] && curve_span(&curve) <= 10.0 * tolerance;
+    let duplicate = fragments.iter().any(|g| {
+        g.cut
+            && ((g.from, g.to) == (ids[0], ids[1]) || (g.from, g.to) == (ids[1], ids[0]))
+            && g.xyz.as_ref().is_some_and(|x| {
+                x.closest_point(mid)
+                    .is_ok_and(|c| c.distance <= 10.0 * tolerance)
+            })
+    });
+    if !(on_border || tiny || duplicate) {
         fragments.push(Fragment {
             uv,
-            xyz: Some(curve.clone()),
+            xyz: Some(curve),
             from: ids[0],
             to: ids[1],
             stretch: None,
             cut: true,
         });
     }
-    drop_dangling(&mut fragments, vertices.len());
-    regions(brep, f, &vertices, &fragments, tolerance)
+    Ok(())
 }
 
 /// The first vertex of the trim after `trim` in its loop.
