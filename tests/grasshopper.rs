@@ -115,3 +115,50 @@ fn the_curvature_tutorial_agrees_with_the_curvature_component() {
     );
     assert_eq!(after("Panel 2"), "0. 0.7071067811865476");
 }
+
+#[test]
+fn the_helix_tutorial_winds_around_its_internalised_curve_and_around_a_line() {
+    // runxel's helix_along_curve: 100 segments give 101 perpendicular frames on the curve; a
+    // series of (100 + 1) + 1 = 102 angles, stepping 2π·r·(turns / 101) rad (r = 1.795,
+    // turns = 8.4808, so 0.94702 rad), is evaluated on circles of radius r around the frames
+    // (the last circle repeats), and Interpolate (uniform knots) runs through the 102 points.
+    let file = "crates/ghx/tests/data/runxel__helix_along_curve.ghx";
+    let value = |out: &str, label: &str| {
+        let start = out
+            .find(&format!("{label}:\n"))
+            .unwrap_or_else(|| panic!("{out}"));
+        out[start..]
+            .lines()
+            .nth(2)
+            .unwrap_or_default()
+            .trim()
+            .trim_start_matches("0. ")
+            .to_owned()
+    };
+    // On the file's own curve (internalised ON_Data, a Rhino 6 NURBS curve).
+    let (code, out, err) = locus(&["run", file]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(value(&out, "interpolate.D"), "0 To 101");
+    // On a straight line of length 10 set in its place: consecutive points are 0.1 apart
+    // along the line and 0.94702 rad apart around it (the last pair only around it). The
+    // interpolated curve is longer than the polyline through its points (100 chords of
+    // √((2r·sin(θ/2))² + 0.1²) and one of 2r·sin(θ/2): 165.67) and shorter than the helix
+    // through them (arcs of r·θ: 171.98).
+    let (code, out, err) = locus(&[
+        "run",
+        file,
+        "--set",
+        "Input Curve=(line: ((0, 0, 0), (10, 0, 0)))",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let theta = 2.0 * std::f64::consts::PI * 1.795 * (8.4808 / 101.0);
+    let chord = 2.0 * 1.795 * (theta / 2.0).sin();
+    let polyline = 100.0 * (chord * chord + 0.01).sqrt() + chord;
+    let arc = 1.795 * theta;
+    let helix = 100.0 * (arc * arc + 0.01).sqrt() + arc;
+    let length: f64 = value(&out, "interpolate.L").parse().unwrap();
+    assert!(
+        polyline < length && length < helix,
+        "{polyline} < {length} < {helix}"
+    );
+}

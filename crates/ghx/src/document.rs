@@ -80,7 +80,7 @@ pub struct GhParam {
     /// front of the input.
     pub expression: Option<String>,
     /// Items that reference Rhino document geometry (`RefID`, `ReferenceData`) or hold
-    /// internalised openNURBS geometry (`ON_Data`): their kinds.
+    /// internalised openNURBS geometry (`ON_Data`) that could not be read: their kinds.
     pub foreign_data: Vec<String>,
     /// A script component's parameter: its access (`ScriptParamAccess`: 0 item, 1 list,
     /// 2 tree).
@@ -140,8 +140,10 @@ pub enum GhItem {
     Colour([u8; 4]),
     /// A mesh face: vertex indices `A`, `B`, `C`, `D` (a triangle repeats `C` as `D`).
     MeshFace([i64; 4]),
-    /// Something that is not a simple value (internalised geometry, a reference): its item
-    /// name.
+    /// Internalised geometry (`ON_Data`), read into a curve, surface, B-rep or mesh; or why it
+    /// could not be read.
+    Geometry(Result<locus_runtime::Value, String>),
+    /// Something that is not a simple value (a reference): its item name.
     Other(String),
 }
 
@@ -273,10 +275,15 @@ fn read_param(chunk: &Chunk) -> GhParam {
         .str("InternalExpression")
         .filter(|e| !e.trim().is_empty())
         .map(str::to_owned);
-    for name in ["RefID", "ReferenceData"] {
-        if contains_named(chunk, name) {
-            param.foreign_data.push(name.to_owned());
-        }
+    // Internalised items carry a nil `RefID` beside their `ON_Data`: only a real GUID
+    // references the Rhino document.
+    if contains_item(chunk, &|i| {
+        i.name == "RefID" && i.value.as_str().is_some_and(|g| !is_nil_guid(g))
+    }) {
+        param.foreign_data.push("RefID".to_owned());
+    }
+    if contains_named(chunk, "ReferenceData") {
+        param.foreign_data.push("ReferenceData".to_owned());
     }
     if let Some(data) = chunk.chunk("PersistentData") {
         let tree = read_tree(data);
@@ -284,13 +291,25 @@ fn read_param(chunk: &Chunk) -> GhParam {
             .branches
             .iter()
             .flat_map(|(_, items)| items)
-            .any(|i| matches!(i, GhItem::Other(n) if n == "ON_Data"))
+            .any(|i| matches!(i, GhItem::Geometry(Err(_))))
         {
             param.foreign_data.push("ON_Data".to_owned());
         }
         param.persistent = Some(tree);
     }
     param
+}
+
+/// Whether an item that passes `test` occurs anywhere below `chunk`.
+fn contains_item(chunk: &Chunk, test: &dyn Fn(&crate::archive::Item) -> bool) -> bool {
+    chunk.items.iter().any(test) || chunk.chunks.iter().any(|c| contains_item(c, test))
+}
+
+/// `00000000-0000-0000-0000-000000000000`, in any spelling.
+fn is_nil_guid(g: &str) -> bool {
+    g.chars()
+        .all(|c| c == '0' || c == '-' || c == '{' || c == '}')
+        && g.contains('0')
 }
 
 /// Whether a chunk or item with this name occurs anywhere below `chunk`.
@@ -342,8 +361,19 @@ fn mesh_face(chunk: &Chunk) -> Option<[i64; 4]> {
 }
 
 fn read_item(chunk: &Chunk) -> GhItem {
-    if chunk.chunk("ON_Data").is_some() || chunk.item("ON_Data").is_some() {
-        return GhItem::Other("ON_Data".to_owned());
+    if let Some(item) = chunk.item("ON_Data") {
+        return GhItem::Geometry(match &item.value {
+            Value::Bytes(bytes) => crate::internalised::decode(bytes),
+            other => Err(format!(
+                "an ON_Data item of type {} instead of bytes",
+                other.type_code()
+            )),
+        });
+    }
+    if chunk.chunk("ON_Data").is_some() {
+        return GhItem::Geometry(Err(
+            "ON_Data stored as a chunk, which locus does not read".to_owned()
+        ));
     }
     if let Some(face) = mesh_face(chunk) {
         return GhItem::MeshFace(face);

@@ -59,6 +59,9 @@ fn guid_of(text: &str) -> String {
     )
 }
 
+/// The nil GUID, as Grasshopper writes an absent reference.
+const NIL_GUID: &str = "00000000-0000-0000-0000-000000000000";
+
 struct Out {
     w: Writer<Vec<u8>>,
 }
@@ -98,6 +101,19 @@ impl Out {
     fn item(&mut self, name: &str, index: Option<usize>, code: u32, text: &str) {
         self.item_start(name, index, code);
         let _ = self.w.write_event(Event::Text(xml_text(text)));
+        self.end("item");
+    }
+
+    /// A byte array item (type code 20): its base64 text in a `stream` element, with the
+    /// length of the bytes.
+    fn bytes_item(&mut self, name: &str, base64: &str) {
+        self.item_start(name, None, 20);
+        let length = (base64.len() / 4 * 3
+            - base64.bytes().rev().take_while(|&b| b == b'=').count())
+        .to_string();
+        self.start("stream", &[("length", &length)]);
+        let _ = self.w.write_event(Event::Text(xml_text(base64)));
+        self.end("stream");
         self.end("item");
     }
 

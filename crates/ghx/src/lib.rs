@@ -24,6 +24,7 @@ mod document;
 mod error;
 mod export;
 mod import;
+mod internalised;
 mod known;
 mod limits;
 mod literal;

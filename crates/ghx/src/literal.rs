@@ -97,7 +97,11 @@ pub fn item(item: &GhItem, target: DataType) -> Option<String> {
                 text(&format!("Q{{{a};{b};{c};{d}}}"))
             }
         }
-        GhItem::Other(_) => return None,
+        // Geometry as its literal form (a B-rep and a mesh have none yet).
+        GhItem::Geometry(Ok(v)) => {
+            return locus_runtime::Literal::from_value(v).ok().map(|l| l.0);
+        }
+        GhItem::Geometry(Err(_)) | GhItem::Other(_) => return None,
     })
 }
 

@@ -292,7 +292,7 @@ fn read_surfaces(
         let s = read_record(r, |r, class| {
             let g = read_class(r, class, v, depth + 1)?;
             match g {
-                Geometry::Surface(s) => Ok((s, class == ClassId::REV_SURFACE)),
+                Geometry::Surface(s) => Ok((s, class.demoted() == ClassId::REV_SURFACE)),
                 other => Err(Error::Invalid(format!(
                     "ON_Brep surface {i} is a {}",
                     other.rhino_type_name()

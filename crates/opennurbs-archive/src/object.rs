@@ -70,6 +70,53 @@ impl ClassId {
         [0xBF, 0x1F, 0xB4, 0xE6, 0xFC, 0x24, 0xF4, 0xB9],
     );
 
+    /// The class openNURBS reads an old or Rhino-internal class id as (`ON_ClassId::ClassId`
+    /// "demotes" ids of classes it does not have): `TL_NurbsCurve` (which Rhino 6 writes for
+    /// curves internalised in Grasshopper) and the old NURBS curve as `ON_NurbsCurve`,
+    /// `TL_NurbsSurface` and the old NURBS surface as `ON_NurbsSurface`, the old poly curve as
+    /// `ON_PolyCurve`, the old trimmed surface, old B-rep and `TL_Brep` as `ON_Brep`,
+    /// `TL_RevSurface` as `ON_RevSurface`, `TL_SumSurface` as `ON_SumSurface`. Other ids are
+    /// themselves.
+    pub fn demoted(self) -> Self {
+        const BFFE: [u8; 8] = [0xBF, 0xFE, 0x00, 0x10, 0x83, 0x01, 0x22, 0xF0];
+        const OLD: [u8; 8] = [0x80, 0x00, 0x00, 0x10, 0x83, 0x01, 0x22, 0xF0];
+        const OLD_BREP: [u8; 8] = [0x80, 0x0E, 0x00, 0x10, 0x83, 0x01, 0x22, 0xF0];
+        const TL_NURBS_CURVE: ClassId = id(0x5EAF_1119, 0x0B51, 0x11d4, BFFE);
+        const OLD_NURBS_CURVE: ClassId = id(0x76A7_09D5, 0x1550, 0x11d4, OLD);
+        const TL_NURBS_SURFACE: ClassId = id(0x4760_C817, 0x0BE3, 0x11d4, BFFE);
+        const OLD_NURBS_SURFACE: ClassId = id(0xFA4F_D4B5, 0x1613, 0x11d4, OLD);
+        const OLD_POLY_CURVE: ClassId = id(0xEF63_8317, 0x154B, 0x11d4, OLD);
+        const OLD_TRIMMED_SURFACE: ClassId = id(0x0705_FDEF, 0x3E2A, 0x11d4, OLD_BREP);
+        const OLD_BREP_ID: ClassId = id(0x2D4C_FEDB, 0x3E2A, 0x11d4, OLD_BREP);
+        const TL_BREP: ClassId = id(
+            0xF06F_C243,
+            0xA32A,
+            0x4608,
+            [0x9D, 0xD8, 0xA7, 0xD2, 0xC4, 0xCE, 0x2A, 0x36],
+        );
+        const TL_REV_SURFACE: ClassId = id(
+            0x0A84_01B6,
+            0x4D34,
+            0x4b99,
+            [0x86, 0x15, 0x1B, 0x4E, 0x72, 0x3D, 0xC4, 0xE5],
+        );
+        const TL_SUM_SURFACE: ClassId = id(
+            0x665F_6331,
+            0x2A66,
+            0x4cce,
+            [0x81, 0xD0, 0xB5, 0xEE, 0xBD, 0x9B, 0x54, 0x17],
+        );
+        match self {
+            TL_NURBS_CURVE | OLD_NURBS_CURVE => Self::NURBS_CURVE,
+            TL_NURBS_SURFACE | OLD_NURBS_SURFACE => Self::NURBS_SURFACE,
+            OLD_POLY_CURVE => Self::POLY_CURVE,
+            OLD_TRIMMED_SURFACE | OLD_BREP_ID | TL_BREP => Self::BREP,
+            TL_REV_SURFACE => Self::REV_SURFACE,
+            TL_SUM_SURFACE => Self::SUM_SURFACE,
+            other => other,
+        }
+    }
+
     /// The class name, for messages.
     pub fn name(&self) -> &'static str {
         match *self {
@@ -194,7 +241,7 @@ pub(crate) fn read_class(
             crate::binary::MAX_DEPTH / 4
         )));
     }
-    match class {
+    match class.demoted() {
         ClassId::MESH => mesh::read(r, v).map(Geometry::Mesh),
         ClassId::NURBS_SURFACE => nurbs::read_surface(r).map(Geometry::Surface),
         ClassId::PLANE_SURFACE => nurbs::read_plane_surface(r).map(Geometry::Surface),
@@ -204,10 +251,47 @@ pub(crate) fn read_class(
         | ClassId::LINE_CURVE
         | ClassId::POLYLINE_CURVE
         | ClassId::ARC_CURVE
-        | ClassId::POLY_CURVE => curve::read_class(r, class, v, depth).map(Geometry::Curve),
+        | ClassId::POLY_CURVE => {
+            curve::read_class(r, class.demoted(), v, depth).map(Geometry::Curve)
+        }
         other => Err(Error::UnsupportedClass {
             id: other.to_string(),
             name: other.name(),
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use locus_kernel::{NurbsCurve, Point3};
+
+    use super::*;
+
+    #[test]
+    fn rhino_internal_class_ids_read_as_their_opennurbs_classes() {
+        let curve = NurbsCurve::new(
+            2,
+            vec![
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 2.0, 0.0),
+                Point3::new(3.0, 1.0, 1.0),
+            ],
+            vec![1.0; 3],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .expect("a curve");
+        // TL_NurbsCurve, 5EAF1119-0B51-11d4-BFFE-0010830122F0, as Rhino 6 writes it.
+        let tl = id(
+            0x5EAF_1119,
+            0x0B51,
+            0x11d4,
+            [0xBF, 0xFE, 0x00, 0x10, 0x83, 0x01, 0x22, 0xF0],
+        );
+        assert_eq!(tl.demoted(), ClassId::NURBS_CURVE);
+        let mut w = Writer::new();
+        write_record(&mut w, tl, |w| nurbs::write_curve(w, &curve)).expect("written");
+        let read = crate::decode(&w.into_bytes()).expect("read");
+        assert_eq!(read, Geometry::Curve(locus_kernel::Curve::Nurbs(curve)));
+        assert_eq!(ClassId::MESH.demoted(), ClassId::MESH);
     }
 }

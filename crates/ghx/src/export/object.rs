@@ -242,7 +242,13 @@ fn param_items<'a>(
                     let mut items = Vec::new();
                     for v in branch.values().flatten() {
                         match item_xml(&v) {
-                            Some(x) => items.push(x),
+                            Some(Ok(x)) => items.push(x),
+                            Some(Err(e)) => warnings.push(ExportWarning(format!(
+                                "node \"{}\" input {}: a {} value is not written: {e}",
+                                p.node.id,
+                                port.nickname,
+                                v.data_type().name()
+                            ))),
                             None => warnings.push(ExportWarning(format!(
                                 "node \"{}\" input {}: a {} value is not written",
                                 p.node.id,
@@ -296,8 +302,13 @@ type ItemXml = (
     Option<String>,
 );
 
-fn item_xml(v: &Value) -> Option<ItemXml> {
-    Some(match v {
+/// The persistent-data item of one value; geometry is internalised as `ON_Data` (its base64
+/// text, type code 20).
+fn item_xml(v: &Value) -> Option<Result<ItemXml, String>> {
+    if let Some(bytes) = crate::internalised::encode_base64(v) {
+        return Some(bytes.map(|b| ("ON_Data", 20, vec![], Some(b))));
+    }
+    Some(Ok(match v {
         Value::Number(x) => ("number", 6, vec![], Some(num(*x))),
         Value::Integer(i) => ("number", 3, vec![], Some(i.to_string())),
         Value::Boolean(b) => ("boolean", 1, vec![], Some(b.to_string())),
@@ -337,7 +348,7 @@ fn item_xml(v: &Value) -> Option<ItemXml> {
             None,
         ),
         _ => return None,
-    })
+    }))
 }
 
 fn write_persistent(o: &mut Out, branches: &[(String, Vec<ItemXml>)]) {
@@ -363,12 +374,22 @@ fn write_persistent(o: &mut Out, branches: &[(String, Vec<ItemXml>)]) {
                             o.chunk_start("Item", Some(k));
                             items_and_chunks(
                                 o,
-                                |o| {
-                                    match text {
-                                        Some(t) => o.item(name, None, *code, t),
-                                        None => o.item_parts(name, *code, parts),
+                                |o| match text {
+                                    // Internalised geometry: its bytes, and the nil
+                                    // document reference Grasshopper writes beside them.
+                                    Some(t) if *code == 20 => {
+                                        o.bytes_item(name, t);
+                                        o.item("RefID", None, 9, NIL_GUID);
+                                        2
                                     }
-                                    1
+                                    Some(t) => {
+                                        o.item(name, None, *code, t);
+                                        1
+                                    }
+                                    None => {
+                                        o.item_parts(name, *code, parts);
+                                        1
+                                    }
                                 },
                                 |_| 0,
                             );

@@ -370,7 +370,7 @@ impl Mapper<'_> {
                 .branches
                 .iter()
                 .flat_map(|(_, items)| items)
-                .any(|i| !matches!(i, GhItem::Other(_)))
+                .any(|i| !matches!(i, GhItem::Other(_) | GhItem::Geometry(Err(_))))
         {
             let value = literal::tree(tree, data_type);
             match locus_runtime::parse_literal(&value.0, data_type) {
@@ -395,12 +395,24 @@ impl Mapper<'_> {
         }
         for kind in &p.foreign_data {
             if kind == "ON_Data" {
+                let mut reasons: Vec<&str> = p
+                    .persistent
+                    .iter()
+                    .flat_map(|t| &t.branches)
+                    .flat_map(|(_, items)| items)
+                    .filter_map(|i| match i {
+                        GhItem::Geometry(Err(e)) => Some(e.as_str()),
+                        _ => None,
+                    })
+                    .collect();
+                reasons.dedup();
                 self.diag(
                     Level::Error,
                     "unsupported-internalised",
                     format!(
-                        "{r} (instance {}): input {port} holds internalised Rhino geometry (ON_Data), which locus cannot read; the input has no data",
-                        r.instance
+                        "{r} (instance {}): input {port} holds internalised Rhino geometry (ON_Data) that locus cannot read ({}); those items are null",
+                        r.instance,
+                        reasons.join("; ")
                     ),
                     Some(r.clone()),
                     Some(id.clone()),
@@ -431,6 +443,28 @@ impl Mapper<'_> {
                     },
                 ));
             }
+        }
+        // Internalised geometry that nothing feeds is a named input, with the geometry as its
+        // value, so that a run can set another curve or shape in its place.
+        let internalised = p
+            .persistent
+            .iter()
+            .flat_map(|t| &t.branches)
+            .flat_map(|(_, items)| items)
+            .any(|i| matches!(i, GhItem::Geometry(Ok(_))));
+        if internalised && p.sources.is_empty() && p.foreign_data.is_empty() {
+            let name = if r.nickname.is_empty() {
+                id.0.clone()
+            } else {
+                r.nickname.clone()
+            };
+            self.inputs.push((
+                name,
+                PortRef {
+                    node: id.clone(),
+                    port: port.to_owned(),
+                },
+            ));
         }
     }
 
