@@ -360,6 +360,41 @@ fn mesh_face(chunk: &Chunk) -> Option<[i64; 4]> {
     Some([index("A")?, index("B")?, index("C")?, index("D")?])
 }
 
+/// A Loft Options item (`GH_LoftOptions`: `LoftType`, `Closed`, `Adjust`, `LoftSimp`, …) as
+/// the words Loft's O input reads: the type (Rhino's numbers 0 normal, 1 loose, 2 tight,
+/// 3 straight, 4 developable, 5 uniform), `closed`, `adjust`, and `rebuild` or `refit` when the
+/// sections are simplified (which Loft refuses with a message, as it does developable).
+fn loft_options(chunk: &Chunk) -> Option<GhItem> {
+    let int = |name: &str| match chunk.item(name).map(|i| &i.value) {
+        Some(Value::Int32(i)) => Some(*i),
+        _ => None,
+    };
+    let kind = int("LoftType")?;
+    let closed = chunk.bool("Closed")?;
+    let adjust = chunk.bool("Adjust").unwrap_or(false);
+    let mut words = vec![match kind {
+        0 => "normal".to_owned(),
+        1 => "loose".to_owned(),
+        2 => "tight".to_owned(),
+        3 => "straight".to_owned(),
+        4 => "developable".to_owned(),
+        5 => "uniform".to_owned(),
+        other => format!("type{other}"),
+    }];
+    if closed {
+        words.push("closed".to_owned());
+    }
+    if adjust {
+        words.push("adjust".to_owned());
+    }
+    match int("LoftSimp") {
+        Some(1) => words.push("rebuild".to_owned()),
+        Some(2) => words.push("refit".to_owned()),
+        _ => {}
+    }
+    Some(GhItem::Text(words.join(" ")))
+}
+
 fn read_item(chunk: &Chunk) -> GhItem {
     if let Some(item) = chunk.item("ON_Data") {
         return GhItem::Geometry(match &item.value {
@@ -377,6 +412,9 @@ fn read_item(chunk: &Chunk) -> GhItem {
     }
     if let Some(face) = mesh_face(chunk) {
         return GhItem::MeshFace(face);
+    }
+    if let Some(options) = loft_options(chunk) {
+        return options;
     }
     // Generic data carries a `TypeName` item beside the value; a text carries a `null_string`
     // flag before it.
@@ -449,5 +487,37 @@ mod tests {
             int("C", 2)
         );
         assert_eq!(item_of(&three), GhItem::Integer(4));
+    }
+
+    fn boolean(name: &str, value: bool) -> String {
+        format!(r#"<item name="{name}" type_name="gh_bool" type_code="1">{value}</item>"#)
+    }
+
+    #[test]
+    fn loft_options_typed_into_an_input_are_read_as_loft_words() {
+        // As runxel's simple_triangulation stores them (a GH_LoftOptions item).
+        let options = |adjust: bool, closed: bool, kind: i32, simplify: i32| {
+            item_of(&format!(
+                r#"<items count="7">{}{}{}{}{}{}<item name="Refit" type_name="gh_double" type_code="6">0.01</item></items>"#,
+                boolean("Adjust", adjust),
+                boolean("Closed", closed),
+                int("LoftEnds", 0),
+                int("LoftSimp", simplify),
+                int("LoftType", kind),
+                int("Rebuild", 10),
+            ))
+        };
+        assert_eq!(
+            options(false, false, 0, 0),
+            GhItem::Text("normal".to_owned())
+        );
+        assert_eq!(
+            options(true, true, 3, 0),
+            GhItem::Text("straight closed adjust".to_owned())
+        );
+        assert_eq!(
+            options(false, false, 4, 1),
+            GhItem::Text("developable rebuild".to_owned())
+        );
     }
 }

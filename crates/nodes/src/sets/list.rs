@@ -58,14 +58,18 @@ fn branch_or_empty<'a>(s: &locus_runtime::Solve<'a>, input: usize) -> std::borro
     }
 }
 
-/// List Item \[Item\]: the item at an index of a list.
+/// List Item \[Item\]: the item at an index of a list, and at offsets from it.
 pub fn list_item() -> NodeType {
     list_node(LIST_ITEM, "List Item", "Item")
         .gh_guid("59daf374-bc21-4a5e-8282-5504fb7ae9ae")
         .description(
             "Retrieves the item at index i of a list. With Wrap, indices wrap around the list \
              (i = length is the first item again, −1 the last); without, an index outside the \
-             list gives a null and a warning naming it. A null item stays null.",
+             list gives a null and a warning naming it. A null item stays null. The outputs \
+             are variable, as when the component is zoomed in Grasshopper: an output named \
+             `i` gives the item at i, one named `+k` or `-k` the item at i + k or i − k \
+             (Grasshopper's `+1`, `+2`, …); an output with another name gives the item at i \
+             plus its position among the outputs.",
         )
         .input(list_input("The list to pick from, of any type."))
         .input(
@@ -78,25 +82,53 @@ pub fn list_item() -> NodeType {
                 .doc("Whether indices wrap around the list bounds; default true.")
                 .default_value(true),
         )
-        .output(Port::new("Item", "i", DataType::Generic).doc("The item at index i."))
+        .variable_outputs(
+            Port::new("Item", "i", DataType::Generic)
+                .doc("The item at index i plus this output's offset (`i`, `+1`, `-1`, …)."),
+            &["i"],
+        )
         .solve(|s| {
             let branch = branch_or_empty(s, 0);
             let index = *s.item::<i64>(1)?;
             let wrap = *s.item::<bool>(2)?;
-            if branch.is_empty() {
-                // Only reached for a list the runtime did not skip; nothing to pick.
-                s.set_value(0, None);
-                return Ok(());
-            }
-            match pick_index(index, branch.len(), wrap) {
-                Ok(i) => s.set_value(0, branch.value(i)),
-                Err(why) => {
-                    s.warning(why);
-                    s.set_value(0, None);
+            for output in 0..s.output_count() {
+                let name = s.output_port(output).map_or("i", |p| p.nickname.as_str());
+                let offset = item_offset(name, output);
+                if branch.is_empty() {
+                    // Only reached for a list the runtime did not skip; nothing to pick.
+                    s.set_value(output, None);
+                    continue;
+                }
+                let Some(at) = index.checked_add(offset) else {
+                    s.warning(format!("index {index} + {offset} does not fit an integer"));
+                    s.set_value(output, None);
+                    continue;
+                };
+                match pick_index(at, branch.len(), wrap) {
+                    Ok(i) => s.set_value(output, branch.value(i)),
+                    Err(why) => {
+                        s.warning(why);
+                        s.set_value(output, None);
+                    }
                 }
             }
             Ok(())
         })
+}
+
+/// The offset from i of a List Item output: `i` 0, `+k` k, `-k` −k, any other name its
+/// position among the outputs.
+fn item_offset(name: &str, position: usize) -> i64 {
+    let name = name.trim();
+    if name == "i" {
+        return 0;
+    }
+    if name.starts_with('+') || name.starts_with('-') {
+        if let Ok(k) = name.parse::<i64>() {
+            return k;
+        }
+    }
+    i64::try_from(position).unwrap_or(i64::MAX)
 }
 
 /// List Length \[Lng\]: the number of items of a list.
@@ -449,6 +481,38 @@ mod tests {
             r.outputs[0].to_text(),
             "{0}:[\"a\", true, {1, 2, 3}, null, true]"
         );
+    }
+
+    #[test]
+    fn list_item_outputs_at_offsets_as_grasshopper_zoomed() {
+        let r = NodeCall::new(&list_item())
+            .output_names(&["-1", "i", "+1", "+2", "next"])
+            .input(generic("{0}:[10, 20, 30]"))
+            .input(DataTree::from_item(1_i64))
+            .input(DataTree::from_item(false))
+            .run();
+        let texts: Vec<String> = r.outputs.iter().map(|o| o.to_text()).collect();
+        assert_eq!(
+            texts,
+            [
+                "{0}:[10]",
+                "{0}:[20]",
+                "{0}:[30]",
+                "{0}:[null]",
+                "{0}:[null]"
+            ]
+        );
+        // +2 and the fifth output (offset 4) fall outside without Wrap: one warning each.
+        assert_eq!(messages(&r, Level::Warning).len(), 2);
+        let r = NodeCall::new(&list_item())
+            .output_names(&["i", "+1", "+2", "+3"])
+            .input(generic("{0}:[10, 20, 30]"))
+            .input(DataTree::from_item(i64::MAX))
+            .input(DataTree::from_item(true))
+            .run();
+        assert_eq!(r.outputs[0].to_text(), "{0}:[20]");
+        assert_eq!(r.outputs[1].to_text(), "{0}:[null]");
+        assert_eq!(messages(&r, Level::Warning).len(), 3);
     }
 
     #[test]
