@@ -123,10 +123,10 @@ fn item_offset(name: &str, position: usize) -> i64 {
     if name == "i" {
         return 0;
     }
-    if name.starts_with('+') || name.starts_with('-') {
-        if let Ok(k) = name.parse::<i64>() {
-            return k;
-        }
+    if (name.starts_with('+') || name.starts_with('-'))
+        && let Ok(k) = name.parse::<i64>()
+    {
+        return k;
     }
     i64::try_from(position).unwrap_or(i64::MAX)
 }
