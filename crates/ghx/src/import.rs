@@ -301,6 +301,7 @@ impl Mapper<'_> {
                     format!("the node type {node_type} is not in the registry"),
                 ),
             },
+            Some(Special::HopsPut) => self.hops_put(o, r, cluster, &prefix),
             Some(Special::HopsCall) => self.unsupported(
                 o,
                 r,

@@ -38,6 +38,9 @@ pub enum Special {
     /// A Hops Get parameter (Get Number, Get Point, …): a named input, as a parameter node of
     /// this type.
     HopsGet(&'static str),
+    /// A Hops output (Context Bake, Context Print): a named output, named as Compute names it
+    /// after the nickname of the component's input, of the data wired into that input.
+    HopsPut,
     /// A Hops call to a remote definition: unsupported.
     HopsCall,
 }
@@ -247,6 +250,16 @@ pub const KNOWN: &[(&str, &str, Special)] = &[
         "e83dd8b2-42aa-41e6-9254-882cddec0a2e",
         "Get File Path",
         Special::HopsGet("params.text"),
+    ),
+    (
+        "ae2531b4-bab2-4bb1-b5bf-f2143d10c132",
+        "Context Bake",
+        Special::HopsPut,
+    ),
+    (
+        "73215ec5-0eb5-4f85-9e07-b09c4590ce2b",
+        "Context Print",
+        Special::HopsPut,
     ),
     (
         "c69bb52c-88ba-4640-b69f-188d111029e8",

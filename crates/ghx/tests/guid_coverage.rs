@@ -73,6 +73,7 @@ fn treatment(s: Special) -> &'static str {
         Special::Timer => "ignored with a remark (a headless run solves once)",
         Special::Cluster => "a sub-graph node with an inline graph of its objects",
         Special::HopsGet(_) => "named input (a parameter node)",
+        Special::HopsPut => "named output of its input's data, named after the input's nickname",
         Special::HopsCall => "unsupported: calls a remote definition",
     }
 }

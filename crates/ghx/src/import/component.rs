@@ -471,7 +471,7 @@ impl Mapper<'_> {
     /// The modifiers set on a parameter that locus can apply to a port of `data_type` (an
     /// input, or an output when `input` is false): Grasshopper's mapping wins over simplify,
     /// as locus applies one structural modifier per port.
-    fn modifiers(
+    pub(super) fn modifiers(
         &mut self,
         r: &ObjectRef,
         id: &NodeId,

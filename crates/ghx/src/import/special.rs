@@ -182,6 +182,70 @@ impl Mapper<'_> {
         }
     }
 
+    /// Context Bake and Context Print (Hops outputs): a Data parameter node that takes the
+    /// component's input (wires, modifiers) and is a named output. Rhino.Compute names the
+    /// output after the nickname of the component's input parameter
+    /// (`GrasshopperDefinition.cs`: `AddOutput(param, param.NickName)`), so does the graph.
+    pub(super) fn hops_put(&mut self, o: &GhObject, r: ObjectRef, cluster: &str, prefix: &str) {
+        let Some(p) = o.inputs.first() else {
+            self.unsupported(o, r, "hops", "the component has no input".to_owned());
+            return;
+        };
+        let name = [&p.nickname, &p.name, &o.nickname, &o.name]
+            .into_iter()
+            .find(|n| !n.trim().is_empty())
+            .cloned()
+            .unwrap_or_else(|| "output".to_owned());
+        let id = self.unique_id(prefix, &slug(&name));
+        let mut node = GraphNode {
+            id: id.clone(),
+            node_type: "params.data".to_owned(),
+            disabled: o.disabled,
+            ..GraphNode::default()
+        };
+        if p.sources.is_empty() {
+            self.diag(
+                Level::Warning,
+                "no-data",
+                format!(
+                    "{r}: nothing is wired into its input {}; the output \"{name}\" is empty",
+                    p.nickname
+                ),
+                Some(r.clone()),
+                Some(id.clone()),
+                None,
+            );
+        } else {
+            self.pending.push(PendingInput {
+                node: id.clone(),
+                port: "Data".to_owned(),
+                sources: p.sources.clone(),
+                object: r.clone(),
+            });
+        }
+        let mods = self.modifiers(&r, &id, p, "Data", DataType::Generic, true);
+        if !mods.is_empty() {
+            node.modifiers.push(("Data".to_owned(), mods));
+        }
+        self.notes.push((
+            id.clone(),
+            format!("{} \"{}\" (Hops output)", o.type_name, o.nickname),
+        ));
+        self.nodes_by_object.insert(o.instance.clone(), id.clone());
+        self.node_pos.insert(id.clone(), self.graph.nodes.len());
+        self.graph.nodes.push(node);
+        let port = PortRef {
+            node: id.clone(),
+            port: "Data".to_owned(),
+        };
+        if cluster.is_empty() {
+            self.compute_outputs
+                .push((o.index, name.clone(), port.clone(), canvas_y(o)));
+        }
+        self.outputs.push((name, port));
+        self.report.objects.push((r, Outcome::Mapped(id)));
+    }
+
     /// A cluster becomes a sub-graph node whose inline graph is the cluster's document: its
     /// Cluster Input and Output objects (in document order) become Data parameters that are
     /// the graph's named inputs and outputs, so that the cluster's k-th input feeds the k-th
@@ -479,6 +543,131 @@ mod tests {
             .collect();
         assert_eq!(types, ["params.file_path", "params.data_recorder"]);
         assert_eq!(import.graph.wires.len(), 1);
+    }
+
+    /// Hops outputs as Rhino.Compute names them: a Context Bake and a Context Print are
+    /// outputs named after their input's nickname, and a component with several outputs that
+    /// is the first object of an `RH_OUT` group gives one output per output, "<group> (X)".
+    #[test]
+    fn context_bake_print_and_multi_output_groups_are_named_outputs() {
+        let mut registry = NodeRegistry::new();
+        locus_nodes::register(&mut registry);
+        let guid = |id: &str| registry.get(id).expect(id).gh_guids[0].clone();
+        let mut point = param("point-in", "Pt", &[]);
+        point.persistent = Some(GhTree {
+            branches: vec![(vec![0], vec![GhItem::Point([1.0, 2.0, 3.0])])],
+        });
+        let mut text = param("text-in", "Txt", &[]);
+        text.persistent = Some(GhTree {
+            branches: vec![(vec![0], vec![GhItem::Text("done".to_owned())])],
+        });
+        let group = crate::Chunk {
+            items: vec![crate::archive::Item {
+                name: "ID".to_owned(),
+                index: Some(0),
+                value: crate::archive::Value::Guid("decon".to_owned()),
+            }],
+            ..crate::Chunk::default()
+        };
+        let doc = GhDocument {
+            objects: vec![
+                GhObject {
+                    index: 0,
+                    type_guid: guid("params.point"),
+                    type_name: "Point".to_owned(),
+                    instance: "point".to_owned(),
+                    nickname: "Pt".to_owned(),
+                    inputs: vec![point],
+                    outputs: vec![param("point", "Pt", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    index: 1,
+                    type_guid: guid("vector.deconstruct_point"),
+                    type_name: "Deconstruct".to_owned(),
+                    instance: "decon".to_owned(),
+                    nickname: "pDecon".to_owned(),
+                    inputs: vec![param("decon-p", "P", &["point"])],
+                    outputs: vec![
+                        param("decon-x", "X", &[]),
+                        param("decon-y", "Y", &[]),
+                        param("decon-z", "Z", &[]),
+                    ],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    index: 2,
+                    type_guid: "ae2531b4-bab2-4bb1-b5bf-f2143d10c132".to_owned(),
+                    type_name: "Context Bake".to_owned(),
+                    instance: "bake".to_owned(),
+                    nickname: "Context Bake".to_owned(),
+                    inputs: vec![param("bake-in", "where", &["point"])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    index: 3,
+                    type_guid: guid("params.text"),
+                    type_name: "Text".to_owned(),
+                    instance: "text".to_owned(),
+                    nickname: "Txt".to_owned(),
+                    inputs: vec![text],
+                    outputs: vec![param("text", "Txt", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    index: 4,
+                    type_guid: "73215ec5-0eb5-4f85-9e07-b09c4590ce2b".to_owned(),
+                    type_name: "Context Print".to_owned(),
+                    instance: "print".to_owned(),
+                    nickname: "Context Print".to_owned(),
+                    inputs: vec![param("print-in", "Tx", &["text"])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    index: 5,
+                    type_guid: crate::known::GROUP.to_owned(),
+                    type_name: "Group".to_owned(),
+                    instance: "group".to_owned(),
+                    nickname: "RH_OUT:coords".to_owned(),
+                    container: group,
+                    ..GhObject::default()
+                },
+            ],
+            ..GhDocument::default()
+        };
+        let import = import_document(&doc, &registry, &Limits::default());
+        assert!(
+            import.report.runs_whole(),
+            "{:#?}",
+            import.report.diagnostics
+        );
+        let compute: Vec<(&str, &str)> = import
+            .compute_outputs
+            .iter()
+            .map(|n| (n.name.as_str(), n.graph.as_str()))
+            .collect();
+        assert_eq!(
+            compute,
+            [
+                ("where", "where"),
+                ("Tx", "Tx"),
+                ("RH_OUT:coords (X)", "coords (X)"),
+                ("RH_OUT:coords (Y)", "coords (Y)"),
+                ("RH_OUT:coords (Z)", "coords (Z)"),
+            ]
+        );
+        let checked = check(&import.graph, &registry)
+            .unwrap_or_else(|d| panic!("{d:#?}\n{}", import.graph.to_ron()));
+        let mut e = Evaluator::new(checked.plan);
+        e.evaluate();
+        let first = |name: &str| e.output(name).and_then(|t| t.values().next().flatten());
+        assert_eq!(
+            first("where"),
+            Some(Value::Point(locus_kernel::Point3::new(1.0, 2.0, 3.0)))
+        );
+        assert_eq!(first("Tx"), Some(Value::Text("done".to_owned())));
+        assert_eq!(first("coords (Y)"), Some(Value::Number(2.0)));
+        assert_eq!(first("coords (Z)"), Some(Value::Number(3.0)));
     }
 
     /// A cluster "twice" whose document adds its input to itself: x → Addition(A = x, B = x)

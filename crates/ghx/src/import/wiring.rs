@@ -170,8 +170,10 @@ impl Mapper<'_> {
                     continue;
                 };
                 let object = doc.objects.iter().find(|o| o.instance == target);
-                let compute = (first && object.is_some_and(|o| o.outputs.len() <= 1))
+                let several = object.is_some_and(|o| o.outputs.len() > 1);
+                let compute = (first && (!several || !is_in))
                     .then(|| (g.index, g.nickname.clone(), object.map_or(0.0, canvas_y)));
+                let each_output = first && several && !is_in;
                 first = false;
                 let record = |this: &mut Self, port: &PortRef| {
                     if let Some((index, name, y)) = compute.clone() {
@@ -214,6 +216,32 @@ impl Mapper<'_> {
                         };
                         self.inputs.push((name.to_owned(), port.clone()));
                         record(self, &port);
+                    }
+                } else if each_output {
+                    // Compute names each output of a component that is the first object of an
+                    // `RH_OUT` group "<group nickname> (<output nickname>)".
+                    let ports = t.resolve_outputs(graph_node.output_names.as_deref());
+                    let gh_outputs = object.map_or(&[][..], |o| o.outputs.as_slice());
+                    for (k, (port, gh)) in ports.iter().zip(gh_outputs).enumerate() {
+                        let port = PortRef {
+                            node: node.clone(),
+                            port: port.nickname.clone(),
+                        };
+                        let suffix = if gh.nickname.is_empty() {
+                            k.to_string()
+                        } else {
+                            gh.nickname.clone()
+                        };
+                        self.outputs
+                            .push((format!("{name} ({suffix})"), port.clone()));
+                        if let Some((index, group, y)) = &compute {
+                            self.compute_outputs.push((
+                                *index,
+                                format!("{group} ({suffix})"),
+                                port,
+                                *y,
+                            ));
+                        }
                     }
                 } else if let Some(port) = t.outputs.first() {
                     let port = PortRef {
