@@ -416,8 +416,15 @@ pub fn export_ghx(
 }
 
 fn is_param(t: &NodeType) -> bool {
-    t.id.starts_with("params.") && t.inputs.len() == 1 && t.outputs.len() == 1
+    // Point On Curve is a parameter in Grasshopper (its curves come in on its own wires).
+    (t.id.starts_with("params.") || t.id == POINT_ON_CURVE)
+        && t.inputs.len() == 1
+        && t.outputs.len() == 1
 }
+
+/// The Point On Curve node, written as the parameter-shaped object it is in Grasshopper, with
+/// its position in the item `parameter`.
+const POINT_ON_CURVE: &str = "curve.point_on_curve";
 
 /// `RH_IN:` and `RH_OUT:` groups: their nickname and the GUIDs they hold (a floating
 /// parameter's object, or a component's port).

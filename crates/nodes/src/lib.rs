@@ -85,7 +85,8 @@
 //!   Curve Domain \[CrvDom\], End Points \[End\], Length \[Len\], Evaluate Length \[Eval\],
 //!   Curve Closest Point \[Crv CP\], Curve Continuity \[Cont\]; Derivatives \[CDiv\]
 //!   ([`curve::derivatives`], one output per derivative); Deconstruct Arc \[DArc\]
-//!   ([`curve::deconstruct_arc`]).
+//!   ([`curve::deconstruct_arc`]); Point On Curve \[CurvePoint\] ([`curve::point_on_curve`],
+//!   the position a setting, as in Grasshopper's object).
 //! - Division ([`curve::division`]): Divide Curve \[Divide\], Divide Length \[DivLength\],
 //!   Shatter; Dash Pattern \[Dash\] ([`curve::dash`]).
 //! - Util ([`curve::util`]): Flip Curve \[Flip\], Split Curve \[Split\].

@@ -2,8 +2,8 @@
 //! category holds no node that is not listed here.
 
 use locus_nodes::curve::{
-    analysis, dash, deconstruct_arc, derivatives, division, edit, extend, frames, primitive,
-    primitive_more, primitive_rect, regions, spline, util,
+    analysis, dash, deconstruct_arc, derivatives, division, edit, extend, frames, point_on_curve,
+    primitive, primitive_more, primitive_rect, regions, spline, util,
 };
 use locus_nodes::params;
 use locus_runtime::NodeRegistry;
@@ -34,6 +34,7 @@ fn curve_ids_are_registered() {
         analysis::CURVE_CONTINUITY,
         derivatives::DERIVATIVES,
         deconstruct_arc::DECONSTRUCT_ARC,
+        point_on_curve::POINT_ON_CURVE,
         division::DIVIDE_CURVE,
         division::DIVIDE_LENGTH,
         division::SHATTER,

@@ -194,6 +194,21 @@ fn param_items<'a>(
     o.item("Name", None, 10, &port.name);
     o.item("NickName", None, 10, nickname);
     n += 3;
+    if p.node_type.id == POINT_ON_CURVE {
+        let x = p
+            .node
+            .settings
+            .iter()
+            .find(|(k, _)| k == "parameter")
+            .and_then(|(_, lit)| lit.parse_value(DataType::Number).ok())
+            .and_then(|v| match v {
+                Value::Number(x) => Some(x),
+                _ => None,
+            })
+            .unwrap_or(0.5);
+        o.item("parameter", None, 6, &num(x));
+        n += 1;
+    }
     if p.node.disabled && is_param(p.node_type) {
         o.item("Locked", None, 1, "true");
         n += 1;

@@ -219,6 +219,13 @@ impl Mapper<'_> {
                 );
             }
         }
+        if node_type.id == "curve.point_on_curve"
+            && let Some(x) = o.container.item("parameter").and_then(|i| i.value.as_f64())
+        {
+            // The position is stored in the object, set with its slider on the canvas.
+            node.settings
+                .push(("parameter".to_owned(), Literal(literal::number(x))));
+        }
         if node_type.id == script::PYTHON {
             let (settings, warnings) = script::settings(o, &resolved);
             node.settings.extend(settings);

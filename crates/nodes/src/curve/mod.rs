@@ -19,6 +19,7 @@ pub mod division;
 pub mod edit;
 pub mod extend;
 pub mod frames;
+pub mod point_on_curve;
 pub mod primitive;
 pub mod primitive_more;
 pub mod primitive_rect;
@@ -46,6 +47,7 @@ pub fn register(registry: &mut NodeRegistry) {
     derivatives::register(registry);
     deconstruct_arc::register(registry);
     dash::register(registry);
+    point_on_curve::register(registry);
 }
 
 /// The curve a value stands for: a curve as it is, a line, circle or arc as the same curve
