@@ -114,7 +114,8 @@
 //!   Plane | Plane \[PPX\], Plane | Plane | Plane \[3PX\], Curve | Plane \[PCX\],
 //!   Curve | Line \[CLX\], within [`intersect::INTERSECTION_TOLERANCE`]; ([`intersect::mesh`])
 //!   Mesh | Ray \[MeshRay\], Mesh | Plane \[Sec\].
-//! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\];
+//! - Physical ([`intersect::physical`]): Curve | Curve \[CCX\], Curve | Self \[CX\], Multiple
+//!   Curves \[MCX\];
 //!   ([`intersect::section`]) Brep | Brep \[BBX\].
 //! - Shape ([`curve::regions`]): Region Union \[RUnion\], Region Intersection \[RInt\],
 //!   Region Difference \[RDiff\] (booleans of planar regions, by the kernel's

@@ -14,11 +14,17 @@ use crate::curve::curve_input;
 pub const CURVE_CURVE: &str = "intersect.curve_curve";
 /// Id of [`curve_self_node`].
 pub const CURVE_SELF: &str = "intersect.curve_self";
+/// Id of [`multiple_curves_node`].
+pub const MULTIPLE_CURVES: &str = "intersect.multiple_curves";
+
+/// The most curves Multiple Curves intersects pairwise (10,000: 5·10⁷ pairs).
+pub const MAX_MULTIPLE_CURVES: usize = 10_000;
 
 /// Registers the Physical curve intersection nodes.
 pub fn register(registry: &mut NodeRegistry) {
     registry.register(curve_curve_node());
     registry.register(curve_self_node());
+    registry.register(multiple_curves_node());
 }
 
 pub(crate) fn physical(id: &str, name: &str, nickname: &str) -> NodeType {
@@ -137,6 +143,99 @@ pub fn curve_self_node() -> NodeType {
         })
 }
 
+/// Multiple Curves \[MCX\]: where the curves of a list meet one another.
+pub fn multiple_curves_node() -> NodeType {
+    physical(MULTIPLE_CURVES, "Multiple Curves", "MCX")
+        .gh_guid("931e6030-ccb3-4a7b-a89a-99dcce8770cd")
+        .description(
+            "Solves the intersection events of every pair of curves in a list, as Curve | Curve \
+             does for two (within the intersection tolerance, 0.001; the ends of a stretch where \
+             two curves coincide are events, with a remark). Pairs are taken in order, (0, 1), \
+             (0, 2), …, (1, 2), …, and the events of a pair in order along the first curve; a \
+             curve is not intersected with itself. Null items are skipped (with a warning) and \
+             keep their place in the indices.",
+        )
+        .input(
+            Port::new("Curves", "C", DataType::Curve)
+                .doc("The curves to intersect with one another.")
+                .list(),
+        )
+        .output(
+            Port::new("Points", "P", DataType::Point)
+                .doc("The intersection events.")
+                .list(),
+        )
+        .output(
+            Port::new("Index A", "iA", DataType::Integer)
+                .doc("The index in C of the first curve of each event.")
+                .list(),
+        )
+        .output(
+            Port::new("Index B", "iB", DataType::Integer)
+                .doc("The index in C of the second curve of each event.")
+                .list(),
+        )
+        .output(
+            Port::new("Param A", "tA", DataType::Number)
+                .doc("The parameter of each event on the first curve.")
+                .list(),
+        )
+        .output(
+            Port::new("Param B", "tB", DataType::Number)
+                .doc("The parameter of each event on the second curve.")
+                .list(),
+        )
+        .solve(|s| {
+            let Some(branch) = s.branch(0) else {
+                return Ok(());
+            };
+            if branch.len() > MAX_MULTIPLE_CURVES {
+                return Err(format!(
+                    "input C: {} curves are more than the {MAX_MULTIPLE_CURVES} intersected \
+                     pairwise",
+                    branch.len()
+                )
+                .into());
+            }
+            let mut curves: Vec<(usize, Shared<Curve>)> = Vec::with_capacity(branch.len());
+            let mut nulls = 0;
+            for (i, value) in branch.values().enumerate() {
+                let Some(value) = value else {
+                    nulls += 1;
+                    continue;
+                };
+                let curve = crate::curve::curve_from_value(&value).ok_or_else(|| {
+                    format!("input C: item {i}, a {}, is not a curve", value.data_type())
+                })?;
+                crate::curve::valid_curve(&curve, &format!("C (item {i})"))?;
+                curves.push((i, curve));
+            }
+            if nulls > 0 {
+                s.warning(format!("input C: {nulls} null item(s) skipped"));
+            }
+            let (mut points, mut index_a, mut index_b, mut t_a, mut t_b) =
+                (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+            for (k, (i, a)) in curves.iter().enumerate() {
+                for (j, b) in &curves[k + 1..] {
+                    let found = a.intersect_curve(b, INTERSECTION_TOLERANCE)?;
+                    for (p, ta, tb) in events(s, a, &found) {
+                        points.push(p);
+                        index_a.push(*i as i64);
+                        index_b.push(*j as i64);
+                        t_a.push(ta);
+                        t_b.push(tb);
+                    }
+                }
+            }
+            s.set_list(0, points);
+            s.set_list(1, index_a);
+            s.set_list(2, index_b);
+            s.set_list(3, t_a);
+            s.set_list(4, t_b);
+            Ok(())
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use locus_kernel::{Circle, Line, Plane, Polyline, Vector3};
@@ -173,6 +272,80 @@ mod tests {
         );
         assert!((tb[0] - 2.0 * third).abs() < 1e-12 && (tb[1] - 4.0 * third).abs() < 1e-12);
         assert!(pts[0].distance(p(1.0, 3f64.sqrt(), 0.0)) < 1e-12);
+    }
+
+    fn integers(tree: &DataTree) -> Vec<i64> {
+        tree.values()
+            .map(|v| match v {
+                Some(Value::Integer(i)) => i,
+                other => panic!("{other:?}"),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn multiple_curves_intersect_every_pair_once_with_input_indices() {
+        // A horizontal line (0), a null (1), a vertical line (2) and a circle of radius 1
+        // about the origin (3): the lines cross at the origin; each line meets the circle
+        // twice; nothing is intersected with itself.
+        let lines = vec![
+            Some(Value::Curve(Shared::new(
+                Line::new(p(-2.0, 0.0, 0.0), p(2.0, 0.0, 0.0)).into(),
+            ))),
+            None,
+            Some(Value::Curve(Shared::new(
+                Line::new(p(0.0, -2.0, 0.0), p(0.0, 2.0, 0.0)).into(),
+            ))),
+            Some(Value::Curve(Shared::new(
+                Circle::new(Plane::WORLD_XY, 1.0).unwrap().into(),
+            ))),
+        ];
+        let mut branch = locus_runtime::Branch::new(DataType::Curve);
+        for v in lines {
+            match v {
+                Some(v) => branch.push_value(v),
+                None => branch.push_null(),
+            }
+        }
+        let tree = DataTree::from_branches([(locus_runtime::TreePath::zero(), branch)]);
+        let r = NodeCall::new(&multiple_curves_node()).input(tree).run();
+        assert_eq!(
+            messages(&r, Level::Warning),
+            ["input C: 1 null item(s) skipped"]
+        );
+        assert_eq!(integers(&r.outputs[1]), [0, 0, 0, 2, 2]);
+        assert_eq!(integers(&r.outputs[2]), [2, 3, 3, 3, 3]);
+        let pts = points(&r.outputs[0]);
+        let want = [
+            p(0.0, 0.0, 0.0),
+            p(-1.0, 0.0, 0.0),
+            p(1.0, 0.0, 0.0),
+            p(0.0, -1.0, 0.0),
+            p(0.0, 1.0, 0.0),
+        ];
+        for (got, want) in pts.iter().zip(want) {
+            assert!(got.distance(want) < 1e-12, "{pts:?}");
+        }
+        // Parameters: a line's run from 0 at its start to its length (4), the circle's from
+        // (1, 0, 0).
+        let (ta, tb) = (numbers(&r.outputs[3]), numbers(&r.outputs[4]));
+        assert!(
+            (ta[0] - 2.0).abs() < 1e-12 && (tb[0] - 2.0).abs() < 1e-12,
+            "{ta:?} {tb:?}"
+        );
+        assert!((tb[3] - 1.5 * std::f64::consts::PI).abs() < 1e-9, "{tb:?}");
+    }
+
+    #[test]
+    fn multiple_curves_on_one_curve_or_none_find_nothing_and_bad_items_are_errors() {
+        let one = curve(Line::new(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0)));
+        let r = NodeCall::new(&multiple_curves_node()).input(one).run();
+        assert_clean(&r);
+        assert!(r.outputs[0].values().next().is_none());
+        let r = NodeCall::new(&multiple_curves_node())
+            .input(DataTree::from_item(Value::Number(1.0)))
+            .run();
+        assert_error(&r, "invalid cast: Number → Curve");
     }
 
     #[test]
