@@ -16,6 +16,20 @@ fn locus(args: &[&str]) -> (i32, String, String) {
     )
 }
 
+/// The first item of output `label` as `locus run` prints it (without its `0. `).
+fn first_item(out: &str, label: &str) -> String {
+    let start = out
+        .find(&format!("{label}:\n"))
+        .unwrap_or_else(|| panic!("{out}"));
+    out[start..]
+        .lines()
+        .nth(2)
+        .unwrap_or_default()
+        .trim()
+        .trim_start_matches("0. ")
+        .to_owned()
+}
+
 #[test]
 fn hand_checked_definitions_pass_locus_test() {
     let (code, out, _) = locus(&["test", "crates/ghx/tests/data"]);
@@ -98,17 +112,7 @@ fn the_curvature_tutorial_agrees_with_the_curvature_component() {
     // The whole file runs (its third formula takes the radius from Deconstruct Arc).
     assert_eq!(code, 0, "{err}");
     assert!(!out.contains("error"), "{out}");
-    let after = |label: &str| {
-        let start = out
-            .find(&format!("{label}:\n"))
-            .unwrap_or_else(|| panic!("{out}"));
-        out[start..]
-            .lines()
-            .nth(2)
-            .unwrap_or_default()
-            .trim()
-            .to_owned()
-    };
+    let after = |label: &str| format!("0. {}", first_item(&out, label));
     assert_eq!(
         after("Panel 1"),
         "0. {-0.4999999999999999, 0.5000000000000001, 0}"
@@ -123,18 +127,7 @@ fn the_helix_tutorial_winds_around_its_internalised_curve_and_around_a_line() {
     // turns = 8.4808, so 0.94702 rad), is evaluated on circles of radius r around the frames
     // (the last circle repeats), and Interpolate (uniform knots) runs through the 102 points.
     let file = "crates/ghx/tests/data/runxel__helix_along_curve.ghx";
-    let value = |out: &str, label: &str| {
-        let start = out
-            .find(&format!("{label}:\n"))
-            .unwrap_or_else(|| panic!("{out}"));
-        out[start..]
-            .lines()
-            .nth(2)
-            .unwrap_or_default()
-            .trim()
-            .trim_start_matches("0. ")
-            .to_owned()
-    };
+    let value = first_item;
     // On the file's own curve (internalised ON_Data, a Rhino 6 NURBS curve).
     let (code, out, err) = locus(&["run", file]);
     assert_eq!(code, 0, "{err}");
