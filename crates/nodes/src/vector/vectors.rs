@@ -171,8 +171,14 @@ pub fn vector_2pt() -> NodeType {
                 .doc("The distance from A to B (the length before unitizing), in model units."),
         )
         .lift3_with_plain(
-            // Finite points, not unitized: the vector and its length, nothing to report.
-            |a: &Point3, b: &Point3, unitize: &bool| !*unitize & a.is_finite() & b.is_finite(),
+            // Not unitized and a finite difference (so finite points: an infinite or NaN
+            // coordinate makes the difference's infinite or NaN), nothing to report. One check:
+            // the sum of the coordinates is finite exactly when they all are, or overflows (a
+            // case the reporting loop then takes).
+            |&a: &Point3, &b: &Point3, unitize: &bool| {
+                let v = b - a;
+                !*unitize & (v.x + v.y + v.z).is_finite()
+            },
             |&a: &Point3, &b: &Point3, _: &bool| {
                 let v = b - a;
                 (v, v.length())
