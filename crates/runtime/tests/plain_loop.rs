@@ -1,5 +1,5 @@
 //! The loop without reports of `lift2_with_plain`, `lift3_with_plain` and
-//! `fast_path2_with_plain` gives exactly what the reporting loop gives (the items of both
+//! `fast_path2_with_plain` (and `lift1_with_plain`) gives exactly what the reporting loop gives (the items of both
 //! outputs, nulls, and messages with path and index) on long branches, several chunks of the
 //! loop long, with items that are not clean in random places (one here and there, or most of
 //! them), with the second input a full branch, one item or a shorter branch, on one and two
@@ -183,5 +183,54 @@ proptest! {
                 "{}", node_type
             );
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    #[test]
+    fn the_plain_loop_of_one_input_agrees_with_the_reporting_loop(
+        n in 1usize..5_000,
+        dirty in prop::collection::vec(any::<usize>(), 0..6),
+        dense in prop_oneof![4 => Just(0.0), 1 => Just(0.002), 1 => Just(0.6), 1 => Just(1.0)],
+        seed: u64,
+        threads in 1usize..3,
+        read in prop_oneof![Just("R"), Just("L"), Just("RL")],
+    ) {
+        let one = |id: &str| {
+            NodeType::new(id, "Sum", "S", "Test")
+                .input(Port::new("A", "A", DataType::Number))
+                .output(Port::new("Sum", "R", DataType::Number))
+                .output(Port::new("Larger", "L", DataType::Boolean))
+        };
+        let f = |a: &f64, r: &mut ItemReport| sum_and_order(a, &1.0, r);
+        let mut registry = NodeRegistry::new();
+        registry.register(one("t.reporting").lift1_with(f));
+        registry.register(one("t.plain1").lift1_with_plain(
+            |a: &f64| clean(a, &1.0),
+            |a: &f64| plain(a, &1.0),
+            f,
+        ));
+        let mut a = DataTree::new();
+        a.insert(TreePath::zero(), numbers(n, &dirty, dense, seed));
+        let outputs = match read {
+            "R" => r#""r": "n.R""#,
+            "L" => r#""l": "n.L""#,
+            _ => r#""r": "n.R", "l": "n.L""#,
+        };
+        let run = |node_type: &str| {
+            let text = format!(
+                r#"(format: 1, nodes: [(id: "n", type: "{node_type}")],
+                       inputs: {{"a": "n.A"}}, outputs: {{{outputs}}})"#
+            );
+            let mut e = Evaluator::from_text(&text, &registry).unwrap();
+            e.set_threads(threads).unwrap();
+            e.set_input("a", a.clone()).unwrap();
+            e.evaluate();
+            let trees: Vec<DataTree> = e.outputs().map(|(_, tree)| tree.clone()).collect();
+            let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
+            (trees, messages)
+        };
+        prop_assert_eq!(run("t.plain1"), run("t.reporting"));
     }
 }

@@ -104,10 +104,16 @@ pub fn deconstruct_vector() -> NodeType {
         .output(Port::new("X component", "X", DataType::Number).doc("The x component."))
         .output(Port::new("Y component", "Y", DataType::Number).doc("The y component."))
         .output(Port::new("Z component", "Z", DataType::Number).doc("The z component."))
-        .lift1_with(|v: &Vector3, report| {
-            warn_unless_finite(report, v.is_finite(), "vector V");
-            Ok((v.x, v.y, v.z))
-        })
+        .lift1_with_plain(
+            // The sum of the coordinates is finite only when they all are (or overflows, a
+            // case the reporting loop then takes): one check, nothing to report.
+            |v: &Vector3| (v.x + v.y + v.z).is_finite(),
+            |v: &Vector3| (v.x, v.y, v.z),
+            |v: &Vector3, report| {
+                warn_unless_finite(report, v.is_finite(), "vector V");
+                Ok((v.x, v.y, v.z))
+            },
+        )
 }
 
 fn unit_axis(id: &str, name: &str, nickname: &str, axis: Vector3, letter: &str) -> NodeType {

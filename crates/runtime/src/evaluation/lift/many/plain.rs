@@ -1,4 +1,4 @@
-//! The loop without reports of `lift2_with_plain`, `lift3_with_plain` and
+//! The loop without reports of `lift1_with_plain`, `lift2_with_plain`, `lift3_with_plain` and
 //! `fast_path2_with_plain`: for the items where a `clean` predicate holds, the reporting item
 //! function reports nothing and gives `Ok(plain(..))`, so the loop computes `plain` for every
 //! item and pushes each of its outputs straight into its column, in one pass, while it ANDs
@@ -12,7 +12,8 @@
 use std::sync::Arc;
 
 use super::{
-    Chunk, ItemReport, Outputs, fall_back, fill, finish, lift2_many, lift3_many, run_range,
+    Chunk, ItemReport, Outputs, fall_back, fill, finish, lift1_many, lift2_many, lift3_many,
+    run_range,
 };
 use crate::evaluation::lift::{Full, Lift, LiftOutput, One, Repeat, Src, items};
 use crate::{Item, NodeError, NodeType};
@@ -72,6 +73,39 @@ fn plain_loop<T: Copy, O: Outputs, I: Fn(usize) -> T>(
         start = end;
     }
     finish::<O>(all, count)
+}
+
+/// The lifted loop of `g` (as [`lift1_many`]) with the plain loop for branches without nulls.
+fn lift1_many_plain<A: Item, O: Outputs>(
+    g: Arc<impl Fn(&A, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static>,
+    clean: impl Fn(&A) -> bool + Send + Sync + 'static,
+    plain: impl Fn(&A) -> O + Send + Sync + 'static,
+) -> Lift {
+    let general = lift1_many::<A, O>(Arc::clone(&g));
+    let general_run = Arc::clone(&general.run);
+    Lift {
+        inputs: general.inputs,
+        outputs: general.outputs,
+        run: Arc::new(move |b, count, parallel, wanted| {
+            if b[0].has_nulls() {
+                return general_run(b, count, parallel, wanted);
+            }
+            let a0 = items::<A>(b[0]);
+            let g = &*g;
+            with_src!(a0, count, |s0| plain_loop(
+                count,
+                parallel,
+                wanted,
+                |start, end| {
+                    let s0 = s0.sub(start, end);
+                    move |j| s0.get(j)
+                },
+                &clean,
+                &plain,
+                &move |k, r: &mut ItemReport| g(s0.get(k), r)
+            ))
+        }),
+    }
 }
 
 /// The lifted loop of `g` (as [`lift2_many`]) with the plain loop for branch pairings without
@@ -148,6 +182,22 @@ fn lift3_many_plain<A: Item, B: Item, C: Item, O: Outputs>(
 }
 
 impl NodeType {
+    /// As [`NodeType::lift1_with`], with the loop without reports of
+    /// [`NodeType::lift2_with_plain`]: `clean(a)` says that `f` reports nothing for this item
+    /// and gives `Ok(plain(a))`.
+    pub fn lift1_with_plain<A: Item, O: Outputs>(
+        self,
+        clean: impl Fn(&A) -> bool + Send + Sync + 'static,
+        plain: impl Fn(&A) -> O + Send + Sync + 'static,
+        f: impl Fn(&A, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static,
+    ) -> Self {
+        let f = Arc::new(f);
+        let g = Arc::clone(&f);
+        let mut node = self.lift1_with(move |a: &A, r: &mut ItemReport| f(a, r));
+        node.lift = Some(lift1_many_plain::<A, O>(g, clean, plain));
+        node
+    }
+
     /// As [`NodeType::lift2_with`], with a loop without reports for the common case.
     /// `clean(a, b)` says that `f` reports nothing for these items and gives
     /// `Ok(plain(a, b))`. In a branch pairing without nulls, every item's outputs are `plain`'s,
