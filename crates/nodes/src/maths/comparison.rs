@@ -82,7 +82,7 @@ pub fn equality() -> NodeType {
 }
 
 /// Whether neither input is NaN: then a comparison reports nothing, and its items take the
-/// lifted loop's branch-free path.
+/// lifted loop's plain pass.
 #[inline(always)]
 fn neither_nan(a: &f64, b: &f64) -> bool {
     !a.is_nan() & !b.is_nan()

@@ -71,9 +71,20 @@ pub fn move_geometry() -> NodeType {
             let t = *s.item::<Vector3>(1)?;
             finish(s, Transform::translation(t))
         })
-        .fast_path2_with(|p: &Point3, t: &Vector3, report| {
-            Some(transform_point(*p, Transform::translation(*t), report))
-        })
+        .fast_path2_with_plain(
+            // A finite motion and moved point: nothing to report.
+            |&p: &Point3, &t: &Vector3| {
+                let x = Transform::translation(t);
+                x.is_finite() & x.transform_point(p).is_finite()
+            },
+            |&p: &Point3, &t: &Vector3| {
+                let x = Transform::translation(t);
+                (x.transform_point(p), x)
+            },
+            |p: &Point3, t: &Vector3, report| {
+                Some(transform_point(*p, Transform::translation(*t), report))
+            },
+        )
 }
 
 /// Rotate \[Rotate\]: a rotation in a plane, about its normal through its origin.

@@ -84,10 +84,16 @@ pub fn deconstruct_point() -> NodeType {
             Port::new("Z component", "Z", DataType::Number)
                 .doc("The z coordinate, in model units."),
         )
-        .lift1_with(|p: &Point3, report| {
-            warn_unless_finite(report, p.is_finite(), "point P");
-            Ok((p.x, p.y, p.z))
-        })
+        .lift1_with_plain(
+            // The sum of the coordinates is finite only when they all are (or overflows, a
+            // case the reporting loop then takes): one check, nothing to report.
+            |p: &Point3| (p.x + p.y + p.z).is_finite(),
+            |p: &Point3| (p.x, p.y, p.z),
+            |p: &Point3, report| {
+                warn_unless_finite(report, p.is_finite(), "point P");
+                Ok((p.x, p.y, p.z))
+            },
+        )
 }
 
 /// Distance \[Dist\]: the Euclidean distance between two points.

@@ -104,10 +104,16 @@ pub fn deconstruct_vector() -> NodeType {
         .output(Port::new("X component", "X", DataType::Number).doc("The x component."))
         .output(Port::new("Y component", "Y", DataType::Number).doc("The y component."))
         .output(Port::new("Z component", "Z", DataType::Number).doc("The z component."))
-        .lift1_with(|v: &Vector3, report| {
-            warn_unless_finite(report, v.is_finite(), "vector V");
-            Ok((v.x, v.y, v.z))
-        })
+        .lift1_with_plain(
+            // The sum of the coordinates is finite only when they all are (or overflows, a
+            // case the reporting loop then takes): one check, nothing to report.
+            |v: &Vector3| (v.x + v.y + v.z).is_finite(),
+            |v: &Vector3| (v.x, v.y, v.z),
+            |v: &Vector3, report| {
+                warn_unless_finite(report, v.is_finite(), "vector V");
+                Ok((v.x, v.y, v.z))
+            },
+        )
 }
 
 fn unit_axis(id: &str, name: &str, nickname: &str, axis: Vector3, letter: &str) -> NodeType {
@@ -171,8 +177,14 @@ pub fn vector_2pt() -> NodeType {
                 .doc("The distance from A to B (the length before unitizing), in model units."),
         )
         .lift3_with_plain(
-            // Finite points, not unitized: the vector and its length, nothing to report.
-            |a: &Point3, b: &Point3, unitize: &bool| !*unitize & a.is_finite() & b.is_finite(),
+            // Not unitized and a finite difference (so finite points: an infinite or NaN
+            // coordinate makes the difference's infinite or NaN), nothing to report. One check:
+            // the sum of the coordinates is finite exactly when they all are, or overflows (a
+            // case the reporting loop then takes).
+            |&a: &Point3, &b: &Point3, unitize: &bool| {
+                let v = b - a;
+                !*unitize & (v.x + v.y + v.z).is_finite()
+            },
             |&a: &Point3, &b: &Point3, _: &bool| {
                 let v = b - a;
                 (v, v.length())

@@ -82,6 +82,9 @@ trait Src<'a, T: 'a>: Copy + Send + Sync {
     fn iter(self, start: usize, end: usize) -> impl Iterator<Item = &'a T>;
     /// The same items as a parallel iterator (slices split into sub-slices).
     fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T>;
+    /// The source of iterations `start..end` as iterations `0..end - start` (a full branch's
+    /// sub-slice, whose indexing by an iteration below `end - start` needs no check).
+    fn sub(self, start: usize, end: usize) -> Self;
 }
 
 /// A branch with one item per iteration.
@@ -114,6 +117,9 @@ impl<'a, T: Sync> Src<'a, T> for Full<'a, T> {
     fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
         self.0[start..end].par_iter()
     }
+    fn sub(self, start: usize, end: usize) -> Self {
+        Full(&self.0[start..end])
+    }
 }
 
 impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
@@ -126,6 +132,9 @@ impl<'a, T: Sync> Src<'a, T> for One<'a, T> {
     }
     fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
         rayon::iter::repeat_n(self.0, end - start)
+    }
+    fn sub(self, _: usize, _: usize) -> Self {
+        self
     }
 }
 
@@ -143,6 +152,10 @@ impl<'a, T: Sync> Src<'a, T> for Repeat<'a, T> {
     }
     fn par(self, start: usize, end: usize) -> impl IndexedParallelIterator<Item = &'a T> {
         (start..end).into_par_iter().map(move |k| self.get(k))
+    }
+    fn sub(self, start: usize, _: usize) -> Self {
+        // Item `start + j` is `self.0[min(start + j, n - 1)]`: from `min(start, n - 1)` on.
+        Repeat(&self.0[start.min(self.0.len() - 1)..])
     }
 }
 

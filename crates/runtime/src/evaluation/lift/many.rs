@@ -3,9 +3,9 @@
 //! function returns a tuple with one item per output and may warn, remark, or fail one output
 //! of an item through an [`ItemReport`]; the runtime runs it as a loop over typed columns that
 //! pushes each output straight into its own column, records each message with the item's path
-//! and index, and skips the outputs that nothing reads. `lift2_with_plain` and
-//! `lift3_with_plain` add a branch-free loop for branch pairings whose items all report
-//! nothing (see `plain_loop`).
+//! and index, and skips the outputs that nothing reads. `lift2_with_plain`,
+//! `lift3_with_plain` and `fast_path2_with_plain` add a loop without reports for the items
+//! that report nothing (see `plain.rs`).
 //!
 //! The general solve function made from the same item function gives the same outputs and
 //! messages in the same order: the report's messages first, then the error of a failing item.
@@ -74,12 +74,29 @@ pub trait Outputs: Sized + Send + 'static {
     fn columns(capacity: usize, wanted: &[bool]) -> Self::Columns;
     /// Pushes the items onto the wanted outputs' columns.
     fn push(self, columns: &mut Self::Columns);
-    /// The wanted outputs' columns of the items of `items()`, one pass over a fresh iterator
-    /// per column (loops without branches, which the compiler can vectorise when the iterator
-    /// is over slices and its items are simple to make).
-    /// Appends `items()` to the columns, one pass over the items per column (`items` is
-    /// called once per wanted output; with slice iterators the compiler vectorises each pass).
-    fn extend_columns<I: Iterator<Item = Self>>(columns: &mut Self::Columns, items: impl Fn() -> I);
+    /// Truncates the wanted outputs' columns to `len` items.
+    fn truncate(columns: &mut Self::Columns, len: usize);
+    /// Appends the outputs of `item(j)` for `j` in `0..n` (each with whether its item was
+    /// clean) to the wanted outputs' columns, which hold `start` items, in one pass; whether
+    /// all were clean. Each column is first filled out to `start + n`
+    /// items with placeholders, which the pass overwrites by index (so it neither grows a
+    /// vector nor checks an index per item, and vectorises where the items allow). The caller
+    /// truncates the columns to `start` again when the chunk is not kept.
+    fn write_chunk<I: Fn(usize) -> (Self, bool)>(
+        columns: &mut Self::Columns,
+        start: usize,
+        n: usize,
+        item: I,
+    ) -> bool;
+    /// [`Outputs::write_chunk`] for the wanted outputs of the bits of `W` (one instance per
+    /// set of wanted outputs, so the pass has no test per item of which outputs are wanted).
+    #[doc(hidden)]
+    fn write_wanted<const W: u32, I: Fn(usize) -> (Self, bool)>(
+        columns: &mut Self::Columns,
+        start: usize,
+        n: usize,
+        item: I,
+    ) -> bool;
     /// The placeholders stored under null items.
     fn placeholder() -> Self;
     /// Appends `other`'s columns to `columns`.
@@ -91,7 +108,7 @@ pub trait Outputs: Sized + Send + 'static {
 }
 
 macro_rules! outputs {
-    ($($t:ident $i:tt),*) => {
+    ($($t:ident $i:tt $d:ident),* ; $($w:literal),*) => {
         impl<$($t: Item),*> Outputs for ($($t,)*) {
             type Columns = ($(Option<Vec<$t>>,)*);
             fn types() -> Vec<DataType> {
@@ -106,13 +123,50 @@ macro_rules! outputs {
                     v.push(self.$i);
                 })*
             }
-            fn extend_columns<I: Iterator<Item = Self>>(
-                columns: &mut Self::Columns,
-                items: impl Fn() -> I,
-            ) {
+            fn truncate(columns: &mut Self::Columns, len: usize) {
                 $(if let Some(v) = &mut columns.$i {
-                    v.extend(items().map(|o| o.$i));
+                    v.truncate(len);
                 })*
+            }
+            #[inline(always)]
+            fn write_chunk<I: Fn(usize) -> (Self, bool)>(
+                columns: &mut Self::Columns,
+                start: usize,
+                n: usize,
+                item: I,
+            ) -> bool {
+                let mut wanted = 0;
+                $(if let Some(v) = &mut columns.$i {
+                    v.resize(start + n, $t::placeholder());
+                    wanted |= 1 << $i;
+                })*
+                match wanted {
+                    $($w => Self::write_wanted::<$w, I>(columns, start, n, item),)*
+                    _ => unreachable!("a set of {} outputs", wanted),
+                }
+            }
+            #[inline(always)]
+            fn write_wanted<const W: u32, I: Fn(usize) -> (Self, bool)>(
+                columns: &mut Self::Columns,
+                start: usize,
+                n: usize,
+                item: I,
+            ) -> bool {
+                $(let $d: &mut [$t] = match &mut columns.$i {
+                    Some(v) if W & (1 << $i) != 0 => &mut v[start..start + n],
+                    _ => &mut [],
+                };
+                // Known to the compiler from here on: no index check in the pass.
+                assert!(W & (1 << $i) == 0 || $d.len() == n);)*
+                let mut clean = true;
+                for j in 0..n {
+                    let (o, ok) = item(j);
+                    clean &= ok;
+                    $(if W & (1 << $i) != 0 {
+                        $d[j] = o.$i;
+                    })*
+                }
+                clean
             }
             fn placeholder() -> Self {
                 ($($t::placeholder(),)*)
@@ -133,16 +187,16 @@ macro_rules! outputs {
         }
     };
 }
-outputs!(A 0);
-outputs!(A 0, B 1);
-outputs!(A 0, B 1, C 2);
-outputs!(A 0, B 1, C 2, D 3);
+outputs!(A 0 a; 0, 1);
+outputs!(A 0 a, B 1 b; 0, 1, 2, 3);
+outputs!(A 0 a, B 1 b, C 2 c; 0, 1, 2, 3, 4, 5, 6, 7);
+outputs!(A 0 a, B 1 b, C 2 c, D 3 d; 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
 
 /// Every output of an item null (a null input, or the function failed).
 const ALL: u32 = u32::MAX;
 
 /// The outputs, messages and nulls of a range of iterations.
-struct Chunk<C> {
+pub(super) struct Chunk<C> {
     columns: C,
     /// (iteration, level, text), in iteration order.
     messages: Vec<(usize, Level, String)>,
@@ -153,7 +207,7 @@ struct Chunk<C> {
 /// Runs iterations `start..end` into `chunk`: `f(k, report)` gives iteration `k`'s outputs,
 /// `is_null(k)` whether a required input item of iteration `k` is null.
 #[inline(always)]
-fn fill<O: Outputs>(
+pub(super) fn fill<O: Outputs>(
     chunk: &mut Chunk<O::Columns>,
     range: std::ops::Range<usize>,
     any_nulls: bool,
@@ -187,6 +241,16 @@ fn fill<O: Outputs>(
     }
 }
 
+impl<C> Chunk<C> {
+    fn new<O: Outputs<Columns = C>>(capacity: usize, wanted: &[bool]) -> Self {
+        Chunk {
+            columns: O::columns(capacity, wanted),
+            messages: Vec::new(),
+            nulls: Vec::new(),
+        }
+    }
+}
+
 /// The loop of a lifted function with several outputs over `count` iterations; with
 /// `parallel`, the first items run on this thread and are timed and the rest is spread over
 /// threads only when that pays (see [`spread`]).
@@ -198,25 +262,44 @@ fn many_loop<O: Outputs>(
     f: impl Fn(usize, &mut ItemReport) -> Result<O, NodeError> + Sync,
     wanted: &[bool],
 ) -> LiftOutput {
-    let new_chunk = |capacity: usize| Chunk {
-        columns: O::columns(capacity, wanted),
-        messages: Vec::new(),
-        nulls: Vec::new(),
-    };
-    let mut all = new_chunk(count);
-    if parallel && count > 1 {
-        let probe = spread::probe(count, LIFT_CHUNK, |start, end| {
-            fill::<O>(&mut all, start..end, any_nulls, &is_null, &f);
+    let mut all = Chunk::new::<O>(count, wanted);
+    run_range(
+        &mut all,
+        0..count,
+        parallel,
+        any_nulls,
+        &is_null,
+        &f,
+        wanted,
+    );
+    finish::<O>(all, count)
+}
+
+/// Runs iterations `range` into `all` (which holds the iterations before it), as
+/// [`many_loop`] does: with `parallel`, spread over threads only when that pays.
+pub(super) fn run_range<O: Outputs>(
+    all: &mut Chunk<O::Columns>,
+    range: std::ops::Range<usize>,
+    parallel: bool,
+    any_nulls: bool,
+    is_null: &(impl Fn(usize) -> bool + Sync),
+    f: &(impl Fn(usize, &mut ItemReport) -> Result<O, NodeError> + Sync),
+    wanted: &[bool],
+) {
+    let (first, count) = (range.start, range.end);
+    if parallel && count > first + 1 {
+        let probe = spread::probe(count - first, LIFT_CHUNK, |start, end| {
+            fill::<O>(all, first + start..first + end, any_nulls, is_null, f);
         });
-        let done = probe.done;
+        let done = first + probe.done;
         if let Some(chunk) = probe.spread_chunk(count - done, LIFT_CHUNK) {
             let starts: Vec<usize> = (done..count).step_by(chunk).collect();
             let chunks: Vec<Chunk<O::Columns>> = starts
                 .par_iter()
                 .map(|&start| {
                     let end = (start + chunk).min(count);
-                    let mut part = new_chunk(end - start);
-                    fill::<O>(&mut part, start..end, any_nulls, &is_null, &f);
+                    let mut part = Chunk::new::<O>(end - start, wanted);
+                    fill::<O>(&mut part, start..end, any_nulls, is_null, f);
                     part
                 })
                 .collect();
@@ -226,11 +309,15 @@ fn many_loop<O: Outputs>(
                 all.nulls.extend(part.nulls);
             }
         } else {
-            fill::<O>(&mut all, done..count, any_nulls, &is_null, &f);
+            fill::<O>(all, done..count, any_nulls, is_null, f);
         }
     } else {
-        fill::<O>(&mut all, 0..count, any_nulls, &is_null, &f);
+        fill::<O>(all, range, any_nulls, is_null, f);
     }
+}
+
+/// The output branches and messages of `count` iterations run into `all`.
+pub(super) fn finish<O: Outputs>(all: Chunk<O::Columns>, count: usize) -> LiftOutput {
     let types = O::types();
     let branches = O::finish(all.columns)
         .into_iter()
@@ -301,113 +388,6 @@ fn lift2_many<A: Item, B: Item, O: Outputs>(
                 move |k, r: &mut ItemReport| g(s0.get(k), s1.get(k), r),
                 wanted
             )))
-        }),
-    }
-}
-
-/// How many iterations `plain_loop` checks, then computes, at a time: small enough that a
-/// chunk's inputs (a few 24-byte points per iteration) stay in the L2 cache between the check
-/// and the output passes, large enough that the passes' set-up costs nothing.
-const CLEAN_CHUNK: usize = 4096;
-
-/// The branch-free loop of a lifted function: when `clean` holds for every item tuple of
-/// `tuples(0, count)` (references to one item of each input), the outputs are `plain` of each,
-/// with no report, check or null per item; `None` as soon as one tuple is not clean (the
-/// caller then runs the general loop, and the partial columns are dropped). Chunk by chunk,
-/// the check runs without an early exit (so that it vectorises), then each wanted output is
-/// appended in one pass over the chunk while its inputs are still in cache, so the inputs
-/// cross the memory bus once however many outputs and checks there are.
-fn plain_loop<T: Copy, O: Outputs, I: Iterator<Item = T>>(
-    count: usize,
-    wanted: &[bool],
-    tuples: impl Fn(usize, usize) -> I,
-    clean: impl Fn(T) -> bool,
-    plain: impl Fn(T) -> O,
-) -> Option<LiftOutput> {
-    let mut columns = O::columns(count, wanted);
-    let mut start = 0;
-    while start < count {
-        let end = (start + CLEAN_CHUNK).min(count);
-        if !tuples(start, end).fold(true, |all, t| all & clean(t)) {
-            return None;
-        }
-        // The chunk's items are still in cache from the check: one trip through memory.
-        O::extend_columns(&mut columns, || tuples(start, end).map(&plain));
-        start = end;
-    }
-    let branches = O::finish(columns)
-        .into_iter()
-        .zip(O::types())
-        .map(|(column, t)| column.map_or_else(|| Branch::new(t), Branch::from_column))
-        .collect();
-    Some((branches, Vec::new()))
-}
-
-/// The lifted loop of `g` (as [`lift2_many`]) with the branch-free loop of `plain` for branch
-/// pairings without nulls whose items are all `clean`.
-fn lift2_many_plain<A: Item, B: Item, O: Outputs>(
-    g: Arc<impl Fn(&A, &B, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static>,
-    clean: impl Fn(&A, &B) -> bool + Send + Sync + 'static,
-    plain: impl Fn(&A, &B) -> O + Send + Sync + 'static,
-) -> Lift {
-    let general = lift2_many::<A, B, O>(g);
-    let general_run = Arc::clone(&general.run);
-    Lift {
-        inputs: general.inputs,
-        outputs: general.outputs,
-        run: Arc::new(move |b, count, parallel, wanted| {
-            if !(b[0].has_nulls() || b[1].has_nulls()) {
-                let (a0, a1) = (items::<A>(b[0]), items::<B>(b[1]));
-                let done = with_src!(a0, count, |s0| with_src!(a1, count, |s1| plain_loop(
-                    count,
-                    wanted,
-                    |start, end| s0.iter(start, end).zip(s1.iter(start, end)),
-                    |(a, b)| clean(a, b),
-                    |(a, b)| plain(a, b)
-                )));
-                if let Some(out) = done {
-                    return out;
-                }
-            }
-            general_run(b, count, parallel, wanted)
-        }),
-    }
-}
-
-/// The lifted loop of `g` (as [`lift3_many`]) with the branch-free loop of `plain` for branch
-/// triples without nulls whose items are all `clean`.
-fn lift3_many_plain<A: Item, B: Item, C: Item, O: Outputs>(
-    g: Arc<impl Fn(&A, &B, &C, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static>,
-    clean: impl Fn(&A, &B, &C) -> bool + Send + Sync + 'static,
-    plain: impl Fn(&A, &B, &C) -> O + Send + Sync + 'static,
-) -> Lift {
-    let general = lift3_many::<A, B, C, O>(g);
-    let general_run = Arc::clone(&general.run);
-    Lift {
-        inputs: general.inputs,
-        outputs: general.outputs,
-        run: Arc::new(move |b, count, parallel, wanted| {
-            if !b.iter().any(|b| b.has_nulls()) {
-                let (a0, a1, a2) = (items::<A>(b[0]), items::<B>(b[1]), items::<C>(b[2]));
-                let done = with_src!(a0, count, |s0| with_src!(a1, count, |s1| with_src!(
-                    a2,
-                    count,
-                    |s2| plain_loop(
-                        count,
-                        wanted,
-                        |start, end| s0
-                            .iter(start, end)
-                            .zip(s1.iter(start, end))
-                            .zip(s2.iter(start, end)),
-                        |((a, b), c)| clean(a, b, c),
-                        |((a, b), c)| plain(a, b, c)
-                    )
-                )));
-                if let Some(out) = done {
-                    return out;
-                }
-            }
-            general_run(b, count, parallel, wanted)
         }),
     }
 }
@@ -505,48 +485,6 @@ impl NodeType {
         node
     }
 
-    /// As [`NodeType::lift2_with`], with a branch-free loop for the common case. `clean(a, b)`
-    /// says that `f` reports nothing for these items and gives `Ok(plain(a, b))`. When every
-    /// item pair of a branch pairing is clean and none is null, the outputs are built from
-    /// `plain` column by column, with no report or check per item (a loop the compiler can
-    /// vectorise); otherwise the loop of `lift2_with` runs. The results are the same either way,
-    /// for any thread count.
-    ///
-    /// ```
-    /// use locus_runtime::{DataTree, DataType, NodeCall, NodeType, Port};
-    /// let larger = NodeType::new("maths.larger", "Larger", "L", "Maths")
-    ///     .input(Port::new("A", "A", DataType::Number))
-    ///     .input(Port::new("B", "B", DataType::Number))
-    ///     .output(Port::new("Larger", ">", DataType::Boolean))
-    ///     .lift2_with_plain(
-    ///         |a: &f64, b: &f64| !a.is_nan() && !b.is_nan(),
-    ///         |a: &f64, b: &f64| (a > b,),
-    ///         |a: &f64, b: &f64, report| {
-    ///             if a.is_nan() || b.is_nan() {
-    ///                 report.warning("NaN");
-    ///             }
-    ///             Ok((a > b,))
-    ///         },
-    ///     );
-    /// let r = NodeCall::new(&larger)
-    ///     .input(DataTree::from_list(vec![1.0, 3.0]))
-    ///     .input(DataTree::from_item(2.0))
-    ///     .run();
-    /// assert_eq!(r.outputs[0].branches()[0].1.slice::<bool>().unwrap(), &[false, true]);
-    /// ```
-    pub fn lift2_with_plain<A: Item, B: Item, O: Outputs>(
-        self,
-        clean: impl Fn(&A, &B) -> bool + Send + Sync + 'static,
-        plain: impl Fn(&A, &B) -> O + Send + Sync + 'static,
-        f: impl Fn(&A, &B, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static,
-    ) -> Self {
-        let f = Arc::new(f);
-        let g = Arc::clone(&f);
-        let mut node = self.lift2_with(move |a: &A, b: &B, r: &mut ItemReport| f(a, b, r));
-        node.lift = Some(lift2_many_plain::<A, B, O>(g, clean, plain));
-        node
-    }
-
     /// As [`NodeType::lift1_with`], for a function of three typed items (inputs 0, 1 and 2).
     pub fn lift3_with<A: Item, B: Item, C: Item, O: Outputs>(
         self,
@@ -562,23 +500,6 @@ impl NodeType {
             Ok(())
         });
         node.lift = Some(lift3_many::<A, B, C, O>(g));
-        node
-    }
-
-    /// As [`NodeType::lift3_with`], with the branch-free loop of
-    /// [`NodeType::lift2_with_plain`]: `clean(a, b, c)` says that `f` reports nothing for these
-    /// items and gives `Ok(plain(a, b, c))`.
-    pub fn lift3_with_plain<A: Item, B: Item, C: Item, O: Outputs>(
-        self,
-        clean: impl Fn(&A, &B, &C) -> bool + Send + Sync + 'static,
-        plain: impl Fn(&A, &B, &C) -> O + Send + Sync + 'static,
-        f: impl Fn(&A, &B, &C, &mut ItemReport) -> Result<O, NodeError> + Send + Sync + 'static,
-    ) -> Self {
-        let f = Arc::new(f);
-        let g = Arc::clone(&f);
-        let mut node =
-            self.lift3_with(move |a: &A, b: &B, c: &C, r: &mut ItemReport| f(a, b, c, r));
-        node.lift = Some(lift3_many_plain::<A, B, C, O>(g, clean, plain));
         node
     }
 
@@ -612,3 +533,6 @@ impl NodeType {
         self
     }
 }
+
+// After the loops it falls back to.
+mod plain;
