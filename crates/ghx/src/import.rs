@@ -28,10 +28,11 @@ mod wiring;
 
 pub(crate) use script::TYPE_HINTS;
 
-/// The Cluster Input object inside a cluster document.
-const CLUSTER_INPUT: &str = "448de216-7d2b-4e83-8ebf-e6ed0e6a4e0e";
+/// The Cluster Input object inside a cluster document (as the runxel tutorials' clusters
+/// hold it).
+pub(crate) const CLUSTER_INPUT: &str = "448de216-3a12-43cf-a135-e3bfafc87744";
 /// The Cluster Output object inside a cluster document.
-const CLUSTER_OUTPUT: &str = "a4b285fe-7c4c-4bd1-9a6a-11ed7b2f1b44";
+pub(crate) const CLUSTER_OUTPUT: &str = "a4b285fe-2e13-4204-b65c-189aa6704da5";
 
 /// A definition mapped onto a graph.
 #[derive(Clone, Debug, Default)]

@@ -355,7 +355,7 @@ impl Mapper<'_> {
     }
 
     /// Wires, persistent data, modifiers and foreign data of one input.
-    fn input_data(
+    pub(super) fn input_data(
         &mut self,
         node: &mut GraphNode,
         r: &ObjectRef,

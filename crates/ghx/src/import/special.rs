@@ -306,17 +306,10 @@ impl Mapper<'_> {
             &o.nickname
         });
         let id = self.unique_id(&prefix, &base);
-        // The cluster's ports are the Cluster Input and Output objects inside, in order.
-        let boundary_in: Vec<&GhObject> = inner
-            .objects
-            .iter()
-            .filter(|x| x.type_guid == CLUSTER_INPUT)
-            .collect();
-        let boundary_out: Vec<&GhObject> = inner
-            .objects
-            .iter()
-            .filter(|x| x.type_guid == CLUSTER_OUTPUT)
-            .collect();
+        // The cluster's ports are the Cluster Input and Output objects inside: the one its
+        // `ParamMap` names for each port, or else the objects in document order.
+        let boundary_in = boundary_objects(o, &o.inputs, inner, CLUSTER_INPUT);
+        let boundary_out = boundary_objects(o, &o.outputs, inner, CLUSTER_OUTPUT);
         if boundary_in.len() != o.inputs.len() || boundary_out.len() != o.outputs.len() {
             self.unsupported(
                 o,
@@ -436,25 +429,23 @@ impl Mapper<'_> {
         self.notes.push((id.clone(), format!("{r}")));
         self.nodes_by_object.insert(o.instance.clone(), id.clone());
         self.node_pos.insert(id.clone(), self.graph.nodes.len());
-        self.graph.nodes.push(GraphNode {
+        let mut node = GraphNode {
             id: id.clone(),
             node_type: SUBGRAPH_TYPE.to_owned(),
             subgraph: Some(SubGraph::Inline(Box::new(mapped.graph))),
             ..GraphNode::default()
-        });
+        };
+        // Each outer input as any component's: its wires, or the data typed into it, and its
+        // modifiers.
         for (outer, name) in o.inputs.iter().zip(&in_names) {
             let port = PortRef {
                 node: id.clone(),
                 port: name.clone(),
             };
             self.input_ports.insert(outer.instance.clone(), port);
-            self.pending.push(PendingInput {
-                node: id.clone(),
-                port: name.clone(),
-                sources: outer.sources.clone(),
-                object: r.clone(),
-            });
+            self.input_data(&mut node, &r, outer, name, DataType::Generic);
         }
+        self.graph.nodes.push(node);
         for (outer, name) in o.outputs.iter().zip(&out_names) {
             let port = PortRef {
                 node: id.clone(),
@@ -466,9 +457,58 @@ impl Mapper<'_> {
     }
 }
 
+/// The Cluster Input or Output objects (`kind`) of a cluster's document, one per port of
+/// `ports`: a cluster's `ParamMap` maps each port's instance GUID to its boundary object's.
+/// Without a map that names every port, the objects of that kind in document order.
+fn boundary_objects<'a>(
+    cluster: &GhObject,
+    ports: &[GhParam],
+    inner: &'a GhDocument,
+    kind: &str,
+) -> Vec<&'a GhObject> {
+    let in_order = || -> Vec<&'a GhObject> {
+        inner
+            .objects
+            .iter()
+            .filter(|x| x.type_guid == kind)
+            .collect()
+    };
+    let Some(map) = cluster.container.chunk("ParamMap") else {
+        return in_order();
+    };
+    let guid = |i: &crate::archive::Item| match &i.value {
+        crate::archive::Value::Guid(g) => Some(g.to_ascii_lowercase()),
+        _ => None,
+    };
+    let values: HashMap<Option<i32>, String> = map
+        .items_named("Value")
+        .filter_map(|i| Some((i.index, guid(i)?)))
+        .collect();
+    let pairs: HashMap<String, &String> = map
+        .items_named("Key")
+        .filter_map(|k| Some((guid(k)?, values.get(&k.index)?)))
+        .collect();
+    let mapped: Option<Vec<&'a GhObject>> = ports
+        .iter()
+        .map(|p| {
+            let target = pairs.get(&p.instance.to_ascii_lowercase())?;
+            inner
+                .objects
+                .iter()
+                .find(|x| x.type_guid == kind && x.instance.eq_ignore_ascii_case(target))
+        })
+        .collect();
+    match mapped {
+        Some(objects) if !objects.is_empty() => objects,
+        _ => in_order(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use locus_runtime::{Evaluator, Value, check};
+
+    use crate::Chunk;
 
     use super::*;
 
@@ -758,5 +798,147 @@ mod tests {
             "{:?}",
             e.messages().collect::<Vec<_>>()
         );
+    }
+
+    /// A cluster's `ParamMap` says which Cluster Input feeds from which port, whatever the
+    /// document order: here the first port feeds "b", the second "a", and the document
+    /// computes a − b.
+    #[test]
+    fn a_clusters_param_map_pairs_ports_with_boundary_objects() {
+        let mut registry = NodeRegistry::new();
+        locus_nodes::register(&mut registry);
+        let subtraction = registry.get("maths.subtraction").expect("sub").gh_guids[0].clone();
+        let boundary = |instance: &str, nickname: &str| GhObject {
+            type_guid: CLUSTER_INPUT.to_owned(),
+            instance: instance.to_owned(),
+            nickname: nickname.to_owned(),
+            outputs: vec![param(instance, nickname, &[])],
+            ..GhObject::default()
+        };
+        let inner = GhDocument {
+            objects: vec![
+                boundary("in-a", "a"),
+                boundary("in-b", "b"),
+                GhObject {
+                    type_guid: subtraction,
+                    instance: "sub".to_owned(),
+                    nickname: "sub".to_owned(),
+                    inputs: vec![
+                        param("sub-a", "A", &["in-a"]),
+                        param("sub-b", "B", &["in-b"]),
+                    ],
+                    outputs: vec![param("sub-r", "R", &[])],
+                    ..GhObject::default()
+                },
+                GhObject {
+                    type_guid: CLUSTER_OUTPUT.to_owned(),
+                    instance: "out".to_owned(),
+                    nickname: "d".to_owned(),
+                    inputs: vec![param("out", "d", &["sub-r"])],
+                    ..GhObject::default()
+                },
+            ],
+            ..GhDocument::default()
+        };
+        let guid = |name: &str, index: i32, g: &str| crate::archive::Item {
+            name: name.to_owned(),
+            index: Some(index),
+            value: crate::archive::Value::Guid(g.to_owned()),
+        };
+        let map = Chunk {
+            name: "ParamMap".to_owned(),
+            items: vec![
+                guid("Key", 0, "port-1"),
+                guid("Value", 0, "in-b"),
+                guid("Key", 1, "port-2"),
+                guid("Value", 1, "in-a"),
+                guid("Key", 2, "port-out"),
+                guid("Value", 2, "out"),
+            ],
+            ..Chunk::default()
+        };
+        let mut first = param("port-1", "b", &[]);
+        first.persistent = Some(GhTree {
+            branches: vec![(vec![0], vec![GhItem::Number(10.0)])],
+        });
+        let mut second = param("port-2", "a", &[]);
+        second.persistent = Some(GhTree {
+            branches: vec![(vec![0], vec![GhItem::Number(3.0)])],
+        });
+        let cluster = GhObject {
+            instance: "cluster".to_owned(),
+            nickname: "diff".to_owned(),
+            inputs: vec![first, second],
+            outputs: vec![param("port-out", "d", &[])],
+            container: Chunk {
+                name: "Container".to_owned(),
+                chunks: vec![map],
+                ..Chunk::default()
+            },
+            ..GhObject::default()
+        };
+        let ins = boundary_objects(&cluster, &cluster.inputs, &inner, CLUSTER_INPUT);
+        let names: Vec<&str> = ins.iter().map(|o| o.nickname.as_str()).collect();
+        assert_eq!(names, ["b", "a"]);
+        // Without the map, document order.
+        let mut bare = cluster.clone();
+        bare.container = Chunk::default();
+        let ins = boundary_objects(&bare, &bare.inputs, &inner, CLUSTER_INPUT);
+        let names: Vec<&str> = ins.iter().map(|o| o.nickname.as_str()).collect();
+        assert_eq!(names, ["a", "b"]);
+        // And the mapped cluster runs as a − b = 3 − 10.
+        let limits = Limits::default();
+        let mut m = Mapper::new(&registry, &limits, Graph::default(), Vec::new());
+        m.map_cluster(&cluster, object_ref(&cluster, ""), "", 0, &inner);
+        m.wire();
+        let mut graph = m.finish().graph;
+        graph.format = locus_runtime::FORMAT_VERSION;
+        graph.outputs.push(GraphOutput {
+            name: "d".to_owned(),
+            source: PortRef {
+                node: NodeId("diff".to_owned()),
+                port: "d".to_owned(),
+            },
+        });
+        let checked =
+            check(&graph, &registry).unwrap_or_else(|d| panic!("{d:#?}\n{}", graph.to_ron()));
+        let mut e = Evaluator::new(checked.plan);
+        e.evaluate();
+        let d: Vec<Option<Value>> = e
+            .output("d")
+            .map(|t| t.values().collect())
+            .unwrap_or_default();
+        assert_eq!(d, [Some(Value::Number(-7.0))], "{}", graph.to_ron());
+    }
+
+    /// The runxel tutorials' cluster holds a real Cluster Input, which its `ParamMap` names.
+    #[test]
+    fn a_real_clusters_boundary_is_found_through_its_param_map() {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/data/runxel__attractor_1_point.ghx"
+        );
+        let bytes = std::fs::read(path).expect("the tutorial");
+        let limits = Limits::default();
+        let root = crate::archive::read_archive(&bytes, &limits).expect("reads");
+        let doc = crate::document::read_document(&root).expect("a document");
+        let cluster = doc
+            .objects
+            .iter()
+            .find(|o| o.type_guid == "f31d8d7a-7536-4ac8-9c96-fde6ecda4d0a")
+            .expect("a cluster");
+        let Some(crate::archive::Value::Bytes(b)) =
+            cluster.container.item("ClusterDocument").map(|i| &i.value)
+        else {
+            panic!("a cluster document");
+        };
+        let inner = read_cluster(b, &limits, 1).expect("the cluster's document");
+        let ins = boundary_objects(cluster, &cluster.inputs, &inner, CLUSTER_INPUT);
+        assert_eq!(cluster.inputs.len(), 1);
+        let names: Vec<(&str, &str)> = ins
+            .iter()
+            .map(|o| (o.nickname.as_str(), o.instance.as_str()))
+            .collect();
+        assert_eq!(names, [("open", "43447478-aa64-4bd1-b4f9-d5c133160376")]);
     }
 }
