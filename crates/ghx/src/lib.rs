@@ -33,7 +33,7 @@ mod ron;
 mod xml;
 
 pub use crate::archive::{Chunk, Form, Item, Value, detect, read_archive};
-pub use crate::binary::{inflate, read_binary, read_compressed};
+pub use crate::binary::{inflate, read_binary, read_compressed, write_binary, write_compressed};
 pub use crate::document::{
     GhDocument, GhItem, GhModifier, GhObject, GhParam, GhTree, Library, read_cluster, read_document,
 };
