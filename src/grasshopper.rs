@@ -246,6 +246,44 @@ pub(crate) fn check_json(registry: &NodeRegistry, paths: &[PathBuf]) -> u8 {
     code
 }
 
+/// Reads every `path:` sub-graph of `graph` (relative to `file`, the graph's own file) into
+/// its node, at any depth, so that the graph can be written as one Grasshopper file with its
+/// sub-graphs as clusters.
+fn inline_subgraphs(
+    graph: &mut locus_runtime::Graph,
+    file: &Path,
+    depth: usize,
+) -> Result<(), String> {
+    use locus_runtime::{MAX_GRAPH_FILE_BYTES, MAX_SUBGRAPH_DEPTH, SubGraph, read_graph_file};
+    for node in &mut graph.nodes {
+        let (mut inner, inner_file) = match &node.subgraph {
+            None => continue,
+            Some(SubGraph::Inline(g)) => ((**g).clone(), file.to_path_buf()),
+            Some(SubGraph::Path(p)) => {
+                if depth >= MAX_SUBGRAPH_DEPTH {
+                    return Err(format!(
+                        "node \"{}\": sub-graphs nest more than {MAX_SUBGRAPH_DEPTH} levels deep",
+                        node.id
+                    ));
+                }
+                let full = file
+                    .parent()
+                    .map_or_else(|| PathBuf::from(p), |d| d.join(p));
+                let text = read_graph_file(&full, MAX_GRAPH_FILE_BYTES)
+                    .map_err(|e| format!("node \"{}\": cannot read \"{p}\": {e}", node.id))?;
+                let doc = Document::parse(&text).map_err(|errors| {
+                    let first = errors.first().map(ToString::to_string).unwrap_or_default();
+                    format!("node \"{}\": \"{p}\" is not a graph: {first}", node.id)
+                })?;
+                (doc.graph().clone(), full)
+            }
+        };
+        inline_subgraphs(&mut inner, &inner_file, depth + 1)?;
+        node.subgraph = Some(SubGraph::Inline(Box::new(inner)));
+    }
+    Ok(())
+}
+
 /// `locus export-ghx GRAPH.ron -o FILE.ghx`.
 pub(crate) fn export(registry: &NodeRegistry, path: &Path, output: &Path) -> u8 {
     let text = match std::fs::read_to_string(path) {
@@ -265,7 +303,12 @@ pub(crate) fn export(registry: &NodeRegistry, path: &Path, output: &Path) -> u8 
             return EXIT_BAD_GRAPH;
         }
     };
-    match locus_ghx::export_ghx(document.graph(), registry) {
+    let mut graph = document.graph().clone();
+    if let Err(e) = inline_subgraphs(&mut graph, path, 0) {
+        eprintln!("locus: cannot export {}: {e}", path.display());
+        return EXIT_BAD_GRAPH;
+    }
+    match locus_ghx::export_ghx(&graph, registry) {
         Ok((ghx, warnings)) => {
             for w in warnings {
                 eprintln!("locus: {}: warning: {w}", path.display());

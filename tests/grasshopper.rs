@@ -155,3 +155,44 @@ fn the_helix_tutorial_winds_around_its_internalised_curve_and_around_a_line() {
         "{polyline} < {length} < {helix}"
     );
 }
+
+/// Sub-graphs are written as clusters: the graph with a sub-graph from a file and an inline
+/// one exports, runs from the `.ghx` with the same outputs as from its RON, and imports,
+/// exports and imports again to the same RON.
+#[test]
+fn sub_graphs_export_as_clusters_and_round_trip() {
+    let dir = std::env::temp_dir().join(format!("locus-cluster-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_owned();
+    let (code, _, err) = locus(&[
+        "export-ghx",
+        "graphs/cluster_subgraph.ron",
+        "-o",
+        &path("a.ghx"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let (_, from_ron, _) = locus(&["run", "graphs/cluster_subgraph.ron"]);
+    let (code, from_ghx, err) = locus(&["run", &path("a.ghx")]);
+    assert_eq!(code, 0, "{err}");
+    // The same numbers, in the same outputs (the inner nodes' ids may differ in messages).
+    let numbers = |out: &str| -> Vec<String> {
+        out.lines()
+            .take_while(|l| !l.starts_with("messages:"))
+            .map(str::to_owned)
+            .collect()
+    };
+    assert_eq!(numbers(&from_ron), numbers(&from_ghx));
+    assert!(from_ghx.contains("doubled:"), "{from_ghx}");
+    assert!(from_ghx.contains("0. 26"), "{from_ghx}");
+    assert!(from_ghx.contains("the square root of -14"), "{from_ghx}");
+    let (code, _, err) = locus(&["import", &path("a.ghx"), "-o", &path("1.ron")]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = locus(&["export-ghx", &path("1.ron"), "-o", &path("b.ghx")]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = locus(&["import", &path("b.ghx"), "-o", &path("2.ron")]);
+    assert_eq!(code, 0, "{err}");
+    let first = std::fs::read_to_string(path("1.ron")).unwrap();
+    assert!(first.contains("graph: ("), "{first}");
+    assert_eq!(first, std::fs::read_to_string(path("2.ron")).unwrap());
+    std::fs::remove_dir_all(&dir).ok();
+}

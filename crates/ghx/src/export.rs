@@ -5,9 +5,12 @@
 //! `param_output` chunks (or `ParameterData` for variable inputs). Values become persistent
 //! data, wires `Source` items, named inputs and outputs `RH_IN:` / `RH_OUT:` groups. Objects
 //! are placed on a layered layout: one column per wire depth, one row per node in a column.
+//! Sub-graph nodes become clusters (`cluster.rs`), whose documents are written by the same
+//! writer.
 
 use std::collections::HashMap;
 
+mod cluster;
 mod gradient;
 mod object;
 mod script;
@@ -176,6 +179,8 @@ fn items_and_chunks(
 
 struct Layout {
     position: HashMap<String, (f32, f32)>,
+    /// The x of the rightmost column.
+    width: f32,
 }
 
 fn layout(graph: &Graph) -> Layout {
@@ -205,7 +210,8 @@ fn layout(graph: &Graph) -> Layout {
         position.insert(n.id.0.clone(), (d as f32 * 220.0, *row as f32 * 90.0));
         *row += 1;
     }
-    Layout { position }
+    let width = rows.keys().max().map_or(0.0, |&d| d as f32 * 220.0);
+    Layout { position, width }
 }
 
 struct Ports<'a> {
@@ -213,6 +219,21 @@ struct Ports<'a> {
     node_type: &'a NodeType,
     inputs: Vec<locus_runtime::Port>,
     outputs: Vec<locus_runtime::Port>,
+    /// The object type written in place of the node type's (GUID, name): a Data parameter
+    /// that is a cluster's boundary is a Cluster Input or Output object.
+    gh_type: Option<(&'static str, &'static str)>,
+    /// The nickname written in place of the node id (a boundary object's is its name).
+    nickname: Option<String>,
+    /// A sub-graph node's cluster document and port map.
+    cluster: Option<cluster::ClusterParts>,
+}
+
+/// What an archive is written for: a file, or a cluster's document (whose named inputs and
+/// outputs are Cluster Input and Output objects instead of `RH_IN` / `RH_OUT` groups).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    File,
+    Cluster,
 }
 
 fn input_guid(node: &str, port: &str) -> String {
@@ -228,27 +249,64 @@ fn object_guid(node: &str) -> String {
 }
 
 /// Writes a graph as `.ghx` text; what cannot be carried over is returned as warnings.
+/// Sub-graph nodes become clusters; their graphs must be inline (a `path:` sub-graph is read
+/// into its node first, as `locus export-ghx` does).
 pub fn export_ghx(
     graph: &Graph,
     registry: &NodeRegistry,
 ) -> Result<(String, Vec<ExportWarning>), ExportError> {
     let mut warnings = Vec::new();
-    let mut nodes = Vec::new();
+    let text = write_archive(graph, registry, Mode::File, 0, &mut warnings)?;
+    Ok((text, warnings))
+}
+
+/// Writes a graph's archive as XML text: a file's, or at `depth` > 0 a cluster's.
+fn write_archive(
+    graph: &Graph,
+    registry: &NodeRegistry,
+    mode: Mode,
+    depth: usize,
+    warnings: &mut Vec<ExportWarning>,
+) -> Result<String, ExportError> {
+    // Sub-graph nodes first: their clusters' documents, and the node types standing for them.
+    let mut cluster_types: Vec<Option<NodeType>> = Vec::with_capacity(graph.nodes.len());
+    let mut cluster_parts: Vec<Option<cluster::ClusterParts>> = Vec::new();
     for n in &graph.nodes {
         if n.subgraph.is_some() || n.node_type == locus_runtime::SUBGRAPH_TYPE {
-            return Err(ExportError::Node {
-                node: n.id.0.clone(),
-                reason: "sub-graph nodes cannot be written as .ghx yet (Grasshopper clusters \
-                         need a nested binary archive); the graph is not exported"
-                    .to_owned(),
-            });
+            let (t, parts) = cluster::cluster(n, registry, depth, warnings)?;
+            cluster_types.push(Some(t));
+            cluster_parts.push(Some(parts));
+        } else {
+            cluster_types.push(None);
+            cluster_parts.push(None);
         }
-        let t = registry
-            .get(&n.node_type)
-            .ok_or_else(|| ExportError::Node {
-                node: n.id.0.clone(),
-                reason: format!("unknown node type {}", n.node_type),
-            })?;
+    }
+    let boundaries = match mode {
+        Mode::File => cluster::Boundaries::default(),
+        Mode::Cluster => cluster::boundaries(graph),
+    };
+    let cluster_nodes: Vec<Option<GraphNode>> = cluster_parts
+        .iter_mut()
+        .map(|p| p.as_mut().map(|p| std::mem::take(&mut p.node)))
+        .collect();
+    let mut nodes = Vec::new();
+    for (((n, standing), parts), cluster_node) in graph
+        .nodes
+        .iter()
+        .zip(&cluster_types)
+        .zip(cluster_parts)
+        .zip(&cluster_nodes)
+    {
+        let n = cluster_node.as_ref().unwrap_or(n);
+        let t = match standing {
+            Some(t) => t,
+            None => registry
+                .get(&n.node_type)
+                .ok_or_else(|| ExportError::Node {
+                    node: n.id.0.clone(),
+                    reason: format!("unknown node type {}", n.node_type),
+                })?,
+        };
         if t.gh_guids.is_empty() {
             return Err(ExportError::Node {
                 node: n.id.0.clone(),
@@ -266,11 +324,15 @@ pub fn export_ghx(
         if t.id == script::PYTHON {
             warnings.extend(script::warnings(n));
         }
+        let boundary = boundaries.of_node(&n.id.0);
         nodes.push(Ports {
             node: n,
             node_type: t,
             inputs,
             outputs,
+            gh_type: boundary.map(|b| b.gh_type()),
+            nickname: boundary.map(|b| b.name.clone()),
+            cluster: parts,
         });
     }
     let port_nick = |p: &Ports<'_>, name: &str, input: bool| -> String {
@@ -282,26 +344,45 @@ pub fn export_ghx(
     };
     let by_id: HashMap<&str, &Ports<'_>> =
         nodes.iter().map(|p| (p.node.id.0.as_str(), p)).collect();
+    // The GUID that a wire from an output names: a floating parameter's object, or a
+    // component's output.
+    let source_guid = |from: &locus_runtime::PortRef| -> Option<String> {
+        let p = by_id.get(from.node.0.as_str())?;
+        Some(if is_param(p.node_type) {
+            object_guid(&p.node.id.0)
+        } else {
+            output_guid(&p.node.id.0, &port_nick(p, &from.port, false))
+        })
+    };
     // Sources per input, in wire order.
     let mut sources: HashMap<(String, String), Vec<String>> = HashMap::new();
     for w in &graph.wires {
-        let (Some(from), Some(to)) = (
-            by_id.get(w.from.node.0.as_str()),
-            by_id.get(w.to.node.0.as_str()),
-        ) else {
+        let (Some(to), Some(guid)) = (by_id.get(w.to.node.0.as_str()), source_guid(&w.from)) else {
             continue;
         };
-        let from_port = port_nick(from, &w.from.port, false);
         let to_port = port_nick(to, &w.to.port, true);
-        let guid = if is_param(from.node_type) {
-            object_guid(&from.node.id.0)
-        } else {
-            output_guid(&from.node.id.0, &from_port)
-        };
         sources
             .entry((w.to.node.0.clone(), to_port))
             .or_default()
             .push(guid);
+    }
+    // A cluster's boundary objects that are not nodes of its graph: a Cluster Input is a
+    // source of the port its input sets, a Cluster Output reads the port its output names.
+    let mut extra_boundaries = Vec::new();
+    for b in boundaries.extra() {
+        let Some(p) = by_id.get(b.port.node.0.as_str()) else {
+            continue;
+        };
+        if b.input {
+            let port = port_nick(p, &b.port.port, true);
+            sources
+                .entry((b.port.node.0.clone(), port))
+                .or_default()
+                .push(b.instance.clone());
+            extra_boundaries.push((b, Vec::new()));
+        } else {
+            extra_boundaries.push((b, source_guid(&b.port).into_iter().collect()));
+        }
     }
     let layout = layout(graph);
     let mut out = Out {
@@ -379,8 +460,11 @@ pub fn export_ghx(
                     );
                     o.end("chunk");
                     o.chunk_start("DefinitionObjects", None);
-                    let groups = groups(graph, &by_id, &port_nick);
-                    let total = nodes.len() + groups.len();
+                    let groups = match mode {
+                        Mode::File => groups(graph, &by_id, &port_nick),
+                        Mode::Cluster => Vec::new(),
+                    };
+                    let total = nodes.len() + extra_boundaries.len() + groups.len();
                     items_and_chunks(
                         o,
                         |o| {
@@ -394,10 +478,21 @@ pub fn export_ghx(
                                     .get(&p.node.id.0)
                                     .copied()
                                     .unwrap_or_default();
-                                object::write_object(o, k, p, &sources, pos, &mut warnings);
+                                object::write_object(o, k, p, &sources, pos, warnings);
                             }
-                            for (k, (nick, ids)) in groups.iter().enumerate() {
-                                write_group(o, nodes.len() + k, nick, ids);
+                            let mut k = nodes.len();
+                            for (row, (b, srcs)) in extra_boundaries.iter().enumerate() {
+                                let x = if b.input {
+                                    -220.0
+                                } else {
+                                    layout.width + 220.0
+                                };
+                                cluster::write_boundary(o, k, b, srcs, (x, row as f32 * 90.0));
+                                k += 1;
+                            }
+                            for (nick, ids) in &groups {
+                                write_group(o, k, nick, ids);
+                                k += 1;
                             }
                             total
                         },
@@ -411,8 +506,7 @@ pub fn export_ghx(
         },
     );
     out.end("Archive");
-    let text = String::from_utf8(out.w.into_inner()).unwrap_or_default();
-    Ok((text, warnings))
+    Ok(String::from_utf8(out.w.into_inner()).unwrap_or_default())
 }
 
 fn is_param(t: &NodeType) -> bool {

@@ -28,11 +28,7 @@ mod wiring;
 
 pub(crate) use script::TYPE_HINTS;
 
-/// The Cluster Input object inside a cluster document (as the runxel tutorials' clusters
-/// hold it).
-pub(crate) const CLUSTER_INPUT: &str = "448de216-3a12-43cf-a135-e3bfafc87744";
-/// The Cluster Output object inside a cluster document.
-pub(crate) const CLUSTER_OUTPUT: &str = "a4b285fe-2e13-4204-b65c-189aa6704da5";
+use crate::known::{CLUSTER_INPUT, CLUSTER_OUTPUT};
 
 /// A definition mapped onto a graph.
 #[derive(Clone, Debug, Default)]

@@ -48,6 +48,17 @@ pub enum Special {
 /// The group type, whose `ID` items list the grouped objects.
 pub const GROUP: &str = "c552a431-af5b-46a9-a8a4-0fcbc27ef596";
 
+/// The cluster type, whose `ClusterDocument` item holds its definition.
+pub const CLUSTER: &str = "f31d8d7a-7536-4ac8-9c96-fde6ecda4d0a";
+
+/// The Cluster Input object inside a cluster's document (as the runxel tutorials' cluster
+/// holds it): a parameter whose data is what the cluster's input is given.
+pub const CLUSTER_INPUT: &str = "448de216-3a12-43cf-a135-e3bfafc87744";
+
+/// The Cluster Output object inside a cluster's document: a parameter whose data is the
+/// cluster's output.
+pub const CLUSTER_OUTPUT: &str = "a4b285fe-2e13-4204-b65c-189aa6704da5";
+
 /// Object types by GUID, with their treatment and a short reason shown in reports.
 pub const KNOWN: &[(&str, &str, Special)] = &[
     (

@@ -56,3 +56,127 @@ fn import_export_import_is_stable_for_every_file() {
         );
     }
 }
+
+/// The values of a graph's outputs, evaluated.
+fn outputs(graph: &locus_runtime::Graph, registry: &NodeRegistry) -> Vec<(String, Vec<String>)> {
+    let checked = locus_runtime::check(graph, registry)
+        .unwrap_or_else(|d| panic!("{d:#?}\n{}", write_graph(graph)));
+    let mut e = locus_runtime::Evaluator::new(checked.plan);
+    e.evaluate();
+    graph
+        .outputs
+        .iter()
+        .map(|o| {
+            let values = e
+                .output(&o.name)
+                .map(|t| t.values().map(|v| format!("{v:?}")).collect())
+                .unwrap_or_default();
+            (o.name.clone(), values)
+        })
+        .collect()
+}
+
+/// Sub-graphs nested two deep export as clusters in clusters: the file reads back into the
+/// same sub-graphs, which compute what the original computes, and a second round gives the
+/// same RON. Inside, the boundary objects are Grasshopper's Cluster Input and Output.
+#[test]
+fn nested_sub_graphs_round_trip_as_clusters() {
+    let registry = registry();
+    let text = r#"(
+        format: 1,
+        name: "nested",
+        nodes: [
+            (id: "n", type: "params.number", values: {"Num": [1, 2]}),
+            (id: "outer", type: "graph", graph: (
+                format: 1,
+                name: "outer",
+                nodes: [
+                    (id: "inner", type: "graph", graph: (
+                        format: 1,
+                        name: "inner",
+                        nodes: [(id: "add", type: "maths.addition", values: {"B": 5})],
+                        inputs: {"a": "add.A"},
+                        outputs: {"s": "add.R"},
+                    )),
+                    (id: "triple", type: "maths.multiplication", values: {"B": 3}),
+                ],
+                wires: [("inner.s", "triple.A")],
+                inputs: {"v": "inner.a"},
+                outputs: {"w": "triple.R", "s": "inner.s"},
+            )),
+        ],
+        wires: [("n.Num", "outer.v")],
+        outputs: {"w": "outer.w", "s": "outer.s"},
+    )"#;
+    let original = Document::parse(text).unwrap().graph().clone();
+    let expected = outputs(&original, &registry);
+    assert_eq!(
+        expected,
+        [
+            (
+                "w".to_owned(),
+                vec![
+                    "Some(Number(18.0))".to_owned(),
+                    "Some(Number(21.0))".to_owned()
+                ]
+            ),
+            (
+                "s".to_owned(),
+                vec![
+                    "Some(Number(6.0))".to_owned(),
+                    "Some(Number(7.0))".to_owned()
+                ]
+            ),
+        ]
+    );
+    let (ghx, warnings) = export_ghx(&original, &registry).unwrap();
+    assert!(warnings.is_empty(), "{warnings:?}");
+    let first = import(ghx.as_bytes(), &registry, &Limits::default()).unwrap();
+    assert!(first.report.runs_whole(), "{:#?}", first.report.diagnostics);
+    assert_eq!(outputs(&first.graph, &registry), expected);
+    let (ghx2, _) = export_ghx(&first.graph, &registry).unwrap();
+    let second = import(ghx2.as_bytes(), &registry, &Limits::default()).unwrap();
+    assert_eq!(
+        write_graph(&by_target(&first.graph)),
+        write_graph(&by_target(&second.graph))
+    );
+    // The outer cluster's document holds a cluster of its own, and both hold Grasshopper's
+    // boundary objects.
+    let limits = Limits::default();
+    let root = locus_ghx::read_archive(ghx.as_bytes(), &limits).unwrap();
+    let doc = locus_ghx::read_document(&root).unwrap();
+    let cluster_document = |o: &locus_ghx::GhObject, depth: usize| {
+        assert_eq!(o.type_guid, "f31d8d7a-7536-4ac8-9c96-fde6ecda4d0a");
+        let Some(locus_ghx::Value::Bytes(b)) =
+            o.container.item("ClusterDocument").map(|i| &i.value)
+        else {
+            panic!("a cluster document: {o:?}");
+        };
+        locus_ghx::read_cluster(b, &limits, depth).unwrap()
+    };
+    let outer = doc.objects.iter().find(|o| o.nickname == "outer").unwrap();
+    let outer_doc = cluster_document(outer, 1);
+    let types = |d: &locus_ghx::GhDocument| -> Vec<String> {
+        d.objects.iter().map(|o| o.type_name.clone()).collect()
+    };
+    let outer_types = types(&outer_doc);
+    assert_eq!(
+        outer_types
+            .iter()
+            .filter(|t| *t == "Cluster Input" || *t == "Cluster Output")
+            .count(),
+        3,
+        "{outer_types:?}"
+    );
+    let inner = outer_doc
+        .objects
+        .iter()
+        .find(|o| o.nickname == "inner")
+        .unwrap();
+    let inner_types = types(&cluster_document(inner, 2));
+    assert!(
+        inner_types.contains(&"Cluster Input".to_owned())
+            && inner_types.contains(&"Cluster Output".to_owned()),
+        "{inner_types:?}"
+    );
+}

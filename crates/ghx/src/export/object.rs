@@ -16,8 +16,12 @@ pub(super) fn write_object(
     items_and_chunks(
         o,
         |o| {
-            o.item("GUID", None, 9, &p.node_type.gh_guids[0]);
-            o.item("Name", None, 10, &p.node_type.name);
+            let (guid, name) = match p.gh_type {
+                Some((guid, name)) => (guid, name),
+                None => (p.node_type.gh_guids[0].as_str(), p.node_type.name.as_str()),
+            };
+            o.item("GUID", None, 9, guid);
+            o.item("Name", None, 10, name);
             2
         },
         |o| {
@@ -25,8 +29,9 @@ pub(super) fn write_object(
             if is_param(p.node_type) {
                 let port = &p.inputs[0];
                 let srcs = sources.get(&(id.clone(), port.nickname.clone()));
+                let nickname = p.nickname.as_deref().unwrap_or(id);
                 let (xml, n, persistent) =
-                    param_items(p, port, &object_guid(id), id, srcs, warnings);
+                    param_items(p, port, &object_guid(id), nickname, srcs, warnings);
                 items_and_chunks(
                     o,
                     |o| {
@@ -44,8 +49,9 @@ pub(super) fn write_object(
                     },
                 );
             } else {
-                let variable =
-                    p.node_type.variable_inputs.is_some() || p.node_type.variable_outputs.is_some();
+                let variable = p.node_type.variable_inputs.is_some()
+                    || p.node_type.variable_outputs.is_some()
+                    || p.cluster.is_some();
                 items_and_chunks(
                     o,
                     |o| {
@@ -62,6 +68,10 @@ pub(super) fn write_object(
                             o.item("CodeInput", None, 10, &script::code(p.node));
                             n += 1;
                         }
+                        if let Some(c) = &p.cluster {
+                            o.bytes_item("ClusterDocument", &c.document);
+                            n += 1;
+                        }
                         o.item("InstanceGuid", None, 9, &object_guid(id));
                         o.item("Name", None, 10, &p.node_type.name);
                         o.item("NickName", None, 10, id);
@@ -75,6 +85,10 @@ pub(super) fn write_object(
                     |o| {
                         attributes(o, pos);
                         let mut chunks = 1;
+                        if let Some(c) = &p.cluster {
+                            cluster::write_param_map(o, &c.map);
+                            chunks += 1;
+                        }
                         if p.node_type.id == "display.gradient" {
                             chunks += gradient::write(o, p.node, warnings);
                         }
