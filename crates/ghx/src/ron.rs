@@ -17,6 +17,8 @@ pub fn to_ron(import: &Import) -> String {
         out.push('\n');
     }
     let lines: Vec<&str> = text.lines().collect();
+    // The nodes whose lines enclose the current one: (indent, id).
+    let mut open: Vec<(usize, String)> = Vec::new();
     for (k, line) in lines.iter().enumerate() {
         let trimmed = line.trim_start();
         let id = if let Some(rest) = trimmed.strip_prefix("(id: \"") {
@@ -29,10 +31,22 @@ pub fn to_ron(import: &Import) -> String {
         } else {
             None
         };
-        if let Some(id) = id
-            && let Some((_, note)) = import.notes.iter().find(|(n, _)| n.0 == id)
+        let indent = &line[..line.len() - trimmed.len()];
+        // A node inside a sub-graph is indented deeper than its sub-graph node: its note is
+        // under the path of the sub-graph nodes it is in (`part/x`).
+        let path = id.map(|id| {
+            while open.last().is_some_and(|(i, _)| *i >= indent.len()) {
+                open.pop();
+            }
+            open.push((indent.len(), id.to_owned()));
+            open.iter()
+                .map(|(_, id)| id.as_str())
+                .collect::<Vec<_>>()
+                .join("/")
+        });
+        if let Some(path) = path
+            && let Some((_, note)) = import.notes.iter().find(|(n, _)| n.0 == path)
         {
-            let indent = &line[..line.len() - trimmed.len()];
             out.push_str(indent);
             out.push_str("// ");
             out.push_str(&note.replace('\n', " "));

@@ -419,6 +419,12 @@ impl Mapper<'_> {
         inner_map.objects(&rest, &path, depth + 1);
         inner_map.wire();
         let mapped = inner_map.finish();
+        self.notes.extend(
+            mapped
+                .notes
+                .iter()
+                .map(|(inner, note)| (NodeId(format!("{id}/{inner}")), note.clone())),
+        );
         self.report.objects.extend(mapped.report.objects);
         self.report.diagnostics.extend(mapped.report.diagnostics);
         // The sub-graph node, wired as any component: outer input k feeds named input k, and
