@@ -184,7 +184,15 @@ impl Program {
                 }
                 Op::Unary(u) => {
                     let a = stack.pop().ok_or_else(underflow)?;
-                    stack.push(u.apply(&a).map_err(fail)?);
+                    let r = u.apply(&a).map_err(fail)?;
+                    if warning.is_none() && !r.is_finite() && a.is_finite() {
+                        warning = Some(if u.is_postfix() {
+                            format!("{a}{} is {r}", u.symbol())
+                        } else {
+                            format!("{}{a} is {r}", u.symbol())
+                        });
+                    }
+                    stack.push(r);
                 }
                 Op::Binary(b) => {
                     let rhs = stack.pop().ok_or_else(underflow)?;
@@ -408,6 +416,52 @@ mod tests {
         assert_eq!(r.warning.as_deref(), Some("10 ^ 400 is Infinity"));
         let r = eval("min(1/0, 5)", &[], &[]);
         assert_eq!(r.warning.as_deref(), Some("division by zero"));
+    }
+
+    /// Grasshopper's postfix operators: `²`, `³`, `°` and `!`, binding tighter than `^` and
+    /// the signs.
+    #[test]
+    fn postfix_squares_cubes_degrees_and_factorials() {
+        assert_eq!(number("3²"), 9.0);
+        assert_eq!(number("2³"), 8.0);
+        assert_eq!(number("-3²"), -9.0);
+        assert_eq!(number("2^2²"), 16.0);
+        assert_eq!(number("(1 + 2)² + 1"), 10.0);
+        assert_eq!(number("180°"), std::f64::consts::PI);
+        assert_eq!(number("sin(90°)"), 1.0);
+        assert_eq!(number("0!"), 1.0);
+        assert_eq!(number("5!"), 120.0);
+        assert_eq!(number("3!²"), 36.0);
+        assert_eq!(number("22!"), 1_124_000_727_777_607_680_000.0);
+        assert_eq!(eval("5 != 4", &[], &[]).value, Operand::Boolean(true));
+        // A name followed by ² is the name squared, not a longer name.
+        let r = eval(
+            "x²+y³",
+            &["x", "y"],
+            &[Operand::Number(3.0), Operand::Number(2.0)],
+        );
+        assert_eq!(r.value, Operand::Number(17.0));
+        // A vector squared is its dot product with itself; cubed, that times the vector.
+        let v = Operand::Vector(Vector3::new(1.0, 2.0, 2.0));
+        assert_eq!(eval("v²", &["v"], &[v.clone()]).value, Operand::Number(9.0));
+        assert_eq!(
+            eval("v³", &["v"], &[v.clone()]).value,
+            Operand::Vector(Vector3::new(9.0, 18.0, 18.0))
+        );
+        // Invalid numbers are NaN with a warning naming the operator.
+        let r = eval("2.5!", &[], &[]);
+        assert!(matches!(r.value, Operand::Number(x) if x.is_nan()));
+        assert_eq!(r.warning.as_deref(), Some("2.5! is NaN"));
+        let r = eval("171!", &[], &[]);
+        assert_eq!(r.warning.as_deref(), Some("171! is Infinity"));
+        let r = eval("(-1)!", &[], &[]);
+        assert_eq!(r.warning.as_deref(), Some("-1! is NaN"));
+        // Degrees and factorials take numbers only.
+        let e = Program::compile("v°", &["v"])
+            .unwrap()
+            .evaluate(|_| Ok(v.clone()))
+            .unwrap_err();
+        assert_eq!(e.to_string(), "cannot compute °Vector at column 2");
     }
 
     #[test]

@@ -59,6 +59,14 @@ pub(crate) enum TokenKind {
     Comma,
     /// `.` (followed by `x`, `y` or `z`)
     Dot,
+    /// `²` (postfix: squared)
+    Squared,
+    /// `³` (postfix: cubed)
+    Cubed,
+    /// `°` (postfix: degrees to radians)
+    Degree,
+    /// `!` (postfix: factorial)
+    Bang,
     /// The end of the formula.
     End,
 }
@@ -88,6 +96,10 @@ impl fmt::Display for TokenKind {
             TokenKind::RightBracket => "]",
             TokenKind::Comma => ",",
             TokenKind::Dot => ".",
+            TokenKind::Squared => "²",
+            TokenKind::Cubed => "³",
+            TokenKind::Degree => "°",
+            TokenKind::Bang => "!",
             TokenKind::End => "the end of the expression",
         };
         f.write_str(symbol)
@@ -126,7 +138,11 @@ pub(crate) fn tokenize(source: &str) -> Result<Vec<Token>, ParseError> {
             '"' => lex_text(&chars, i)?,
             c if c.is_alphabetic() || c == '_' => {
                 let mut end = i + 1;
-                while end < chars.len() && (chars[end].is_alphanumeric() || chars[end] == '_') {
+                // `²` and `³` are numeric characters, but postfix operators here (`x²`).
+                while end < chars.len()
+                    && (chars[end].is_alphanumeric() || chars[end] == '_')
+                    && !matches!(chars[end], '²' | '³')
+                {
                     end += 1;
                 }
                 (TokenKind::Name(chars[i..end].iter().collect()), end - i)
@@ -161,6 +177,10 @@ pub(crate) fn tokenize(source: &str) -> Result<Vec<Token>, ParseError> {
                 _ => (TokenKind::Equal, 1),
             },
             '!' if next == Some('=') => (TokenKind::NotEqual, 2),
+            '!' => (TokenKind::Bang, 1),
+            '²' => (TokenKind::Squared, 1),
+            '³' => (TokenKind::Cubed, 1),
+            '°' => (TokenKind::Degree, 1),
             other => {
                 return Err(ParseError::new(
                     format!("unexpected character \"{other}\""),

@@ -163,7 +163,7 @@ impl BinaryOp {
     }
 }
 
-/// The prefix operators of the expression language.
+/// The prefix and postfix operators of the expression language.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum UnaryOp {
     /// `-x`
@@ -172,16 +172,41 @@ pub enum UnaryOp {
     Plus,
     /// `not x`
     Not,
+    /// `x²`: `x * x` (a vector's is its dot product with itself).
+    Squared,
+    /// `x³`: `x * x * x`.
+    Cubed,
+    /// `x°`: degrees to radians, `x × π / 180`.
+    Radians,
+    /// `n!`: the factorial of a whole number from 0 up (NaN for any other number; infinite,
+    /// so NaN with a warning, above 170).
+    Factorial,
 }
 
+/// The largest whole number whose factorial is finite in double precision.
+const MAX_FACTORIAL: f64 = 170.0;
+
 impl UnaryOp {
-    /// The operator as written in a formula.
+    /// The operator as written in a formula (before the operand, or after it when
+    /// [`is_postfix`](Self::is_postfix)).
     pub fn symbol(self) -> &'static str {
         match self {
             UnaryOp::Negate => "-",
             UnaryOp::Plus => "+",
             UnaryOp::Not => "not ",
+            UnaryOp::Squared => "²",
+            UnaryOp::Cubed => "³",
+            UnaryOp::Radians => "°",
+            UnaryOp::Factorial => "!",
         }
+    }
+
+    /// Whether the operator is written after its operand (`x²`, `90°`, `5!`).
+    pub fn is_postfix(self) -> bool {
+        matches!(
+            self,
+            UnaryOp::Squared | UnaryOp::Cubed | UnaryOp::Radians | UnaryOp::Factorial
+        )
     }
 
     /// Applies the operator.
@@ -190,7 +215,21 @@ impl UnaryOp {
     /// [`EvalError::Unary`] for a text (or a boolean under `-`), [`EvalError::NotBoolean`]
     /// for `not` on a non-boolean.
     pub fn apply(self, a: &Operand) -> Result<Operand, EvalError> {
+        let unary = |_| EvalError::Unary {
+            op: self.symbol(),
+            operand: a.kind(),
+        };
+        match self {
+            UnaryOp::Squared => return BinaryOp::Multiply.apply(a, a).map_err(unary),
+            UnaryOp::Cubed => {
+                let square = BinaryOp::Multiply.apply(a, a).map_err(unary)?;
+                return BinaryOp::Multiply.apply(&square, a).map_err(unary);
+            }
+            _ => {}
+        }
         match (self, a.numeric()) {
+            (UnaryOp::Radians, Operand::Number(x)) => Ok(Operand::Number(x.to_radians())),
+            (UnaryOp::Factorial, Operand::Number(n)) => Ok(Operand::Number(factorial(n))),
             (UnaryOp::Not, _) => Ok(Operand::Boolean(!a.truth()?)),
             (UnaryOp::Negate, Operand::Number(x)) => Ok(Operand::Number(-x)),
             (UnaryOp::Negate, Operand::Vector(v)) => Ok(Operand::Vector(-v)),
@@ -206,6 +245,18 @@ impl UnaryOp {
             }),
         }
     }
+}
+
+/// `n!` for a whole `n` from 0 up, by the product in increasing order (exact up to 22!); NaN for
+/// any other number, infinity above [`MAX_FACTORIAL`].
+fn factorial(n: f64) -> f64 {
+    if !(n >= 0.0 && n.fract() == 0.0) {
+        return f64::NAN;
+    }
+    if n > MAX_FACTORIAL {
+        return f64::INFINITY;
+    }
+    (2..=n as u32).fold(1.0, |p, k| p * f64::from(k))
 }
 
 impl Operand {

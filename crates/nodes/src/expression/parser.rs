@@ -269,8 +269,20 @@ impl Parser<'_> {
 
     fn postfix(&mut self) -> Parsed {
         self.primary()?;
-        while self.peek().kind == TokenKind::Dot {
+        loop {
+            let op = match self.peek().kind {
+                TokenKind::Dot => None,
+                TokenKind::Squared => Some(UnaryOp::Squared),
+                TokenKind::Cubed => Some(UnaryOp::Cubed),
+                TokenKind::Degree => Some(UnaryOp::Radians),
+                TokenKind::Bang => Some(UnaryOp::Factorial),
+                _ => return Ok(()),
+            };
             let column = self.advance().column;
+            if let Some(op) = op {
+                self.emit(Op::Unary(op), column, 1, 1);
+                continue;
+            }
             let t = self.advance();
             let axis = match &t.kind {
                 TokenKind::Name(n) if n.eq_ignore_ascii_case("x") => Axis::X,
@@ -282,7 +294,6 @@ impl Parser<'_> {
             };
             self.emit(Op::Member(axis), column, 1, 1);
         }
-        Ok(())
     }
 
     fn primary(&mut self) -> Parsed {
