@@ -443,9 +443,12 @@ mod tests {
         assert_eq!(r.value, Operand::Number(17.0));
         // A vector squared is its dot product with itself; cubed, that times the vector.
         let v = Operand::Vector(Vector3::new(1.0, 2.0, 2.0));
-        assert_eq!(eval("v²", &["v"], &[v.clone()]).value, Operand::Number(9.0));
         assert_eq!(
-            eval("v³", &["v"], &[v.clone()]).value,
+            eval("v²", &["v"], std::slice::from_ref(&v)).value,
+            Operand::Number(9.0)
+        );
+        assert_eq!(
+            eval("v³", &["v"], std::slice::from_ref(&v)).value,
             Operand::Vector(Vector3::new(9.0, 18.0, 18.0))
         );
         // Invalid numbers are NaN with a warning naming the operator.
