@@ -6,9 +6,11 @@
 use crate::curve::nurbs::basis::MAX_ORDER;
 use crate::{NurbsCurve, Point3, Vector3};
 
-/// One span's polynomial piece in Bézier form on `[a, b]`.
+/// One span's polynomial piece in Bézier form on `[a, b]`, with room for `N > degree` control
+/// points: `N` = [`MAX_ORDER`] (the default) holds every degree, and the closest-point search
+/// uses `N` = 4 for degrees up to 3 (cubic), so that copies and working arrays stay small.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct BezierPiece {
+pub(crate) struct BezierPiece<const N: usize = MAX_ORDER> {
     pub(crate) a: f64,
     pub(crate) b: f64,
     degree: usize,
@@ -16,7 +18,7 @@ pub(crate) struct BezierPiece {
     /// and evaluation skips the quotient rule.
     rational: bool,
     /// Homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
-    points: [[f64; 4]; MAX_ORDER],
+    points: [[f64; 4]; N],
 }
 
 impl NurbsCurve {
@@ -24,23 +26,25 @@ impl NurbsCurve {
     /// knots[span + 1]`): control point `j` is the blossom `B(a, …, a, b, …, b)` with `j` copies
     /// of `b`, computed by de Boor's triangle on the homogeneous control points.
     pub(crate) fn bezier_piece(&self, span: usize) -> BezierPiece {
+        self.bezier_piece_in(span)
+    }
+
+    /// [`NurbsCurve::bezier_piece`] with room for `N > degree` control points.
+    pub(crate) fn bezier_piece_in<const N: usize>(&self, span: usize) -> BezierPiece<N> {
         let degree = self.degree();
+        debug_assert!(degree < N);
         let first = span + 1 - degree;
         let knots = &self.knots()[first..first + 2 * degree];
         let (a, b) = (self.knots()[span], self.knots()[span + 1]);
-        let mut homogeneous = [[0.0; 4]; MAX_ORDER];
+        let mut homogeneous = [[0.0; 4]; N];
         let mut rational = false;
         for (i, h) in homogeneous[..=degree].iter_mut().enumerate() {
             let (q, w) = (self.points()[first + i], self.weights()[first + i]);
             rational |= w != 1.0;
             *h = [q.x * w, q.y * w, q.z * w, w];
         }
-        let mut points = [[0.0; 4]; MAX_ORDER];
-        if degree < 4 {
-            blossoms::<4>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
-        } else {
-            blossoms::<MAX_ORDER>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
-        }
+        let mut points = [[0.0; 4]; N];
+        blossoms::<N>(degree, knots, [a, b], &homogeneous[..=degree], &mut points);
         if !rational {
             // (1 − α)·1 + α·1 may round away from 1.
             for q in &mut points[..=degree] {
@@ -68,26 +72,44 @@ pub(crate) fn blossoms<const N: usize>(
     homogeneous: &[[f64; 4]],
     points: &mut [[f64; 4]],
 ) {
-    let mut start = [[0.0; 4]; N];
-    start[..=degree].copy_from_slice(&homogeneous[..=degree]);
-    for (j, out) in points[..=degree].iter_mut().enumerate() {
-        let mut d = start;
-        for r in 1..=degree {
-            let x = if r <= degree - j { a } else { b };
-            for i in (r..=degree).rev() {
-                let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
-                let alpha = (x - k0) / (k1 - k0);
-                let prev = d[i - 1];
-                for (c, &q) in d[i].iter_mut().zip(&prev) {
-                    *c = (1.0 - alpha) * q + alpha * *c;
-                }
+    // Point j is de Boor's triangle with `a` on its first `degree − j` levels and `b` on the
+    // others. The levels with `a` are shared: the triangle runs once with `a` throughout, and
+    // before its level r the branch for j = degree − r + 1 goes on with `b` (the same
+    // operations, in the same order, as a triangle per point). The weights `alpha` of level r
+    // at row i are computed once for `a` and once for `b`.
+    let mut alpha_a = [[0.0; N]; N];
+    let mut alpha_b = [[0.0; N]; N];
+    for r in 1..=degree {
+        for i in r..=degree {
+            let (k0, k1) = (knots[i - 1], knots[i + degree - r]);
+            alpha_a[r][i] = (a - k0) / (k1 - k0);
+            alpha_b[r][i] = (b - k0) / (k1 - k0);
+        }
+    }
+    let level = |d: &mut [[f64; 4]; N], alphas: &[f64; N], r: usize| {
+        for i in (r..=degree).rev() {
+            let alpha = alphas[i];
+            let prev = d[i - 1];
+            let q = &mut d[i];
+            for c in 0..4 {
+                q[c] = (1.0 - alpha) * prev[c] + alpha * q[c];
             }
         }
-        *out = d[degree];
+    };
+    let mut d = [[0.0; 4]; N];
+    d[..=degree].copy_from_slice(&homogeneous[..=degree]);
+    for r in 1..=degree {
+        let mut branch = d;
+        for (s, alphas) in alpha_b.iter().enumerate().take(degree + 1).skip(r) {
+            level(&mut branch, alphas, s);
+        }
+        points[degree - r + 1] = branch[degree];
+        level(&mut d, &alpha_a[r], r);
     }
+    points[0] = d[degree];
 }
 
-impl BezierPiece {
+impl<const N: usize> BezierPiece<N> {
     /// The homogeneous control points `(w·x, w·y, w·z, w)`, `degree + 1` of them.
     pub(crate) fn homogeneous(&self) -> &[[f64; 4]] {
         &self.points[..=self.degree]
@@ -98,8 +120,10 @@ impl BezierPiece {
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
         for h in &self.points[..=self.degree] {
+            // Every weight is exactly 1 when the piece is not rational.
+            let inv_w = if self.rational { 1.0 / h[3] } else { 1.0 };
             for c in 0..3 {
-                let v = h[c] / h[3];
+                let v = h[c] * inv_w;
                 lo[c] = lo[c].min(v);
                 hi[c] = hi[c].max(v);
             }
@@ -115,15 +139,15 @@ impl BezierPiece {
     /// The two halves of the piece, split at the middle of `[a, b]` by de Casteljau's algorithm
     /// on the homogeneous points (exact up to rounding; each half lies in the convex hull of its
     /// own control points, which is tighter than the whole's).
-    pub(crate) fn halves(&self) -> [BezierPiece; 2] {
+    pub(crate) fn halves(&self) -> [Self; 2] {
         let p = self.degree;
         let mid = 0.5 * (self.a + self.b);
-        let mut left = BezierPiece {
+        let mut left = Self {
             a: self.a,
             b: mid,
             ..*self
         };
-        let mut right = BezierPiece {
+        let mut right = Self {
             a: mid,
             b: self.b,
             ..*self
@@ -141,33 +165,17 @@ impl BezierPiece {
         [left, right]
     }
 
-    /// Whether every point of the piece is farther from `p` than `sqrt(limit)`, by the boxes of
-    /// its control points after `depth` halvings: a piece is ruled out when its own box is
-    /// beyond `limit`, or when both its halves are ruled out with one halving less. The test
-    /// may answer no for a piece that is in fact beyond (it is a bound), never yes for a piece
-    /// that is not.
-    pub(crate) fn is_beyond(&self, p: Point3, limit: f64, depth: u32) -> bool {
-        if self.box_distance_squared(p) > limit {
-            return true;
-        }
-        if depth == 0 {
-            return false;
-        }
-        let [left, right] = self.halves();
-        left.is_beyond(p, limit, depth - 1) && right.is_beyond(p, limit, depth - 1)
-    }
-
     /// The point (as a vector) and the first and second derivatives at `t`.
     pub(crate) fn derivatives(&self, t: f64) -> [Vector3; 3] {
-        if self.degree < 4 {
+        if N > 4 && self.degree < 4 {
             self.derivatives_with::<4>(t)
         } else {
-            self.derivatives_with::<MAX_ORDER>(t)
+            self.derivatives_with::<N>(t)
         }
     }
 
-    /// [`BezierPiece::derivatives`] with an `N > degree`-sized working copy of the points.
-    fn derivatives_with<const N: usize>(&self, t: f64) -> [Vector3; 3] {
+    /// [`BezierPiece::derivatives`] with an `M > degree`-sized working copy of the points.
+    fn derivatives_with<const M: usize>(&self, t: f64) -> [Vector3; 3] {
         let p = self.degree;
         let inv_h = 1.0 / (self.b - self.a);
         let s = (t - self.a) * inv_h;
@@ -179,8 +187,8 @@ impl BezierPiece {
                 x[3] + s * (y[3] - x[3]),
             ]
         };
-        let mut q = [[0.0; 4]; N];
-        q.copy_from_slice(&self.points[..N]);
+        let mut q = [[0.0; 4]; M];
+        q.copy_from_slice(&self.points[..M]);
         // Down to three points (two for a line), keeping the last levels for the derivatives.
         for level in 1..=p.saturating_sub(2) {
             for i in 0..=p - level {
@@ -266,7 +274,11 @@ mod tests {
                         );
                         let on = c.point_at(t);
                         assert!(half.box_distance_squared(on) <= 1e-26);
-                        assert!(!piece.is_beyond(on, 1e-20, 3));
+                        for quarter in half.halves() {
+                            if (quarter.a..=quarter.b).contains(&t) {
+                                assert!(quarter.box_distance_squared(on) <= 1e-26);
+                            }
+                        }
                     }
                 }
                 let beside = c.point_at(piece.a) + Vector3::new(0.0, 0.0, 50.0);
