@@ -226,6 +226,8 @@ struct Ports<'a> {
     nickname: Option<String>,
     /// A sub-graph node's cluster document and port map.
     cluster: Option<cluster::ClusterParts>,
+    /// The parameter types of its inputs and outputs, for `ParameterData`.
+    param_ids: (Vec<String>, Vec<String>),
 }
 
 /// What an archive is written for: a file, or a cluster's document (whose named inputs and
@@ -325,7 +327,9 @@ fn write_archive(
             warnings.extend(script::warnings(n));
         }
         let boundary = boundaries.of_node(&n.id.0);
+        let param_ids = object::param_type_ids(registry, t, &inputs, &outputs);
         nodes.push(Ports {
+            param_ids,
             node: n,
             node_type: t,
             inputs,

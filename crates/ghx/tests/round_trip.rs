@@ -180,3 +180,75 @@ fn nested_sub_graphs_round_trip_as_clusters() {
         "{inner_types:?}"
     );
 }
+
+/// The parameter types (`InputId` / `OutputId`) by component in a file's archive (the node
+/// type a component's GUID maps to, so that old and new GUIDs of a component are one).
+fn param_ids(
+    root: &locus_ghx::Chunk,
+    registry: &NodeRegistry,
+) -> std::collections::BTreeSet<(String, String, String)> {
+    let mut out = std::collections::BTreeSet::new();
+    let doc = locus_ghx::read_document(root).unwrap();
+    for o in &doc.objects {
+        let Some(data) = o.container.chunk("ParameterData") else {
+            continue;
+        };
+        for item in &data.items {
+            if let ("InputId" | "OutputId", locus_ghx::Value::Guid(g)) =
+                (item.name.as_str(), &item.value)
+            {
+                let component = registry
+                    .by_gh_guid(&o.type_guid)
+                    .map_or_else(|| o.type_guid.clone(), |t| t.id.clone());
+                out.insert((component, item.name.clone(), g.clone()));
+            }
+        }
+    }
+    out
+}
+
+/// Grasshopper rebuilds a variable-parameter component's ports from the parameter types in
+/// its `ParameterData`: every type the export writes for a component is one Grasshopper wrote
+/// for that component in the corpus, and none is missing.
+#[test]
+fn variable_components_carry_grasshoppers_parameter_types() {
+    let registry = registry();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let mut seen = std::collections::BTreeSet::new();
+    let mut written = std::collections::BTreeSet::new();
+    let mut exported_components = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let f = entry.unwrap().path();
+        if !locus_ghx::is_grasshopper_path(&f) {
+            continue;
+        }
+        let bytes = std::fs::read(&f).unwrap();
+        let root = locus_ghx::read_archive(&bytes, &Limits::default()).unwrap();
+        seen.extend(param_ids(&root, &registry));
+        let first = import(&bytes, &registry, &Limits::default()).unwrap();
+        let (ghx, _) = export_ghx(&first.graph, &registry).unwrap();
+        let root = locus_ghx::read_archive(ghx.as_bytes(), &Limits::default()).unwrap();
+        let doc = locus_ghx::read_document(&root).unwrap();
+        for o in &doc.objects {
+            if let Some(data) = o.container.chunk("ParameterData") {
+                exported_components += 1;
+                let ins = data.items_named("InputId").count();
+                let outs = data.items_named("OutputId").count();
+                assert_eq!(
+                    (ins, outs),
+                    (o.inputs.len(), o.outputs.len()),
+                    "{}: {}",
+                    f.display(),
+                    o.type_name
+                );
+            }
+        }
+        written.extend(param_ids(&root, &registry));
+    }
+    assert!(exported_components > 10, "{exported_components}");
+    let unknown: Vec<_> = written.difference(&seen).collect();
+    assert!(
+        unknown.is_empty(),
+        "written but never in the corpus: {unknown:#?}"
+    );
+}

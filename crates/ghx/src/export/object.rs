@@ -162,8 +162,14 @@ pub(super) fn write_object(
                                 o,
                                 |o| {
                                     o.item("InputCount", None, 3, &p.inputs.len().to_string());
+                                    for (k, id) in p.param_ids.0.iter().enumerate() {
+                                        o.item("InputId", Some(k), 9, id);
+                                    }
                                     o.item("OutputCount", None, 3, &p.outputs.len().to_string());
-                                    2
+                                    for (k, id) in p.param_ids.1.iter().enumerate() {
+                                        o.item("OutputId", Some(k), 9, id);
+                                    }
+                                    2 + p.param_ids.0.len() + p.param_ids.1.len()
                                 },
                                 |o| {
                                     write_ports(o, "InputParam", "OutputParam", warnings);
@@ -185,6 +191,62 @@ pub(super) fn write_object(
         },
     );
     o.end("chunk");
+}
+
+/// Grasshopper's Generic Data parameter type (`Param_GenericObject`).
+const GENERIC_PARAM: &str = "8ec86459-bf01-4409-baee-174d0d2b13d0";
+/// The variable parameter type of the Expression and Evaluate components.
+const EXPRESSION_VARIABLE_PARAM: &str = "ba80fd98-91a1-4958-b6a7-a94e40e52bdb";
+/// The type of Evaluate's formula input `F`.
+const EVALUATE_FORMULA_PARAM: &str = "bc6c097c-6cc2-479c-b5aa-af99fbb72b88";
+/// The type of a script component's inputs (`Param_ScriptVariable`).
+const SCRIPT_VARIABLE_PARAM: &str = "84fa917c-1ed8-4db3-8be1-7bdc4a6495a2";
+/// Grasshopper's Text parameter type (`Param_String`).
+const TEXT_PARAM: &str = "3ede854e-c753-40eb-84cb-b48008f14fd4";
+
+/// The parameter types of a component's ports as Grasshopper records them in `ParameterData`
+/// (`InputId` / `OutputId`), from which it rebuilds a variable-parameter component's ports when
+/// it opens the file: the Expression's, Evaluate's and script components' own types (as the
+/// corpus's files hold them), else the floating parameter of the port's data type (Number
+/// 3e8ca6be-…, Integer, Text, Point…), else Generic Data.
+pub(super) fn param_type_ids(
+    registry: &NodeRegistry,
+    node_type: &NodeType,
+    inputs: &[locus_runtime::Port],
+    outputs: &[locus_runtime::Port],
+) -> (Vec<String>, Vec<String>) {
+    let by_type = |t: DataType| -> String {
+        if t == DataType::Generic {
+            return GENERIC_PARAM.to_owned();
+        }
+        registry
+            .iter()
+            .filter(|n| n.id.starts_with("params.") && n.name == t.name())
+            .find(|n| n.outputs.len() == 1 && n.outputs[0].data_type == t)
+            .and_then(|n| n.gh_guids.first().cloned())
+            .unwrap_or_else(|| GENERIC_PARAM.to_owned())
+    };
+    let ins = inputs
+        .iter()
+        .enumerate()
+        .map(|(k, p)| match node_type.id.as_str() {
+            "maths.expression" => EXPRESSION_VARIABLE_PARAM.to_owned(),
+            "maths.evaluate" if k == 0 => EVALUATE_FORMULA_PARAM.to_owned(),
+            "maths.evaluate" => EXPRESSION_VARIABLE_PARAM.to_owned(),
+            script::PYTHON => SCRIPT_VARIABLE_PARAM.to_owned(),
+            _ => by_type(p.data_type),
+        })
+        .collect();
+    let outs = outputs
+        .iter()
+        .map(|p| match node_type.id.as_str() {
+            "maths.expression" | "maths.evaluate" => GENERIC_PARAM.to_owned(),
+            script::PYTHON if p.nickname == "out" => TEXT_PARAM.to_owned(),
+            script::PYTHON => GENERIC_PARAM.to_owned(),
+            _ => by_type(p.data_type),
+        })
+        .collect();
+    (ins, outs)
 }
 
 type ChunkWriter<'a> = Box<dyn FnOnce(&mut Out) + 'a>;
