@@ -252,3 +252,32 @@ fn variable_components_carry_grasshoppers_parameter_types() {
         "written but never in the corpus: {unknown:#?}"
     );
 }
+
+/// Sub-graphs nested deeper than a file read back by locus may hold clusters, and sub-graphs
+/// still in files, are errors naming the node, not files that cannot be read.
+#[test]
+fn too_deep_or_unread_sub_graphs_are_export_errors() {
+    let registry = registry();
+    let mut text = r#"(format: 1, nodes: [(id: "add", type: "maths.addition")],
+        inputs: {"a": "add.A"}, outputs: {"r": "add.R"})"#
+        .to_owned();
+    for depth in 0..Limits::default().max_cluster_depth + 1 {
+        text = format!(
+            r#"(format: 1, nodes: [(id: "level{depth}", type: "graph", graph: {text})],
+                inputs: {{"a": "level{depth}.a"}}, outputs: {{"r": "level{depth}.r"}})"#
+        );
+    }
+    let graph = Document::parse(&text).unwrap().graph().clone();
+    let e = export_ghx(&graph, &registry).unwrap_err().to_string();
+    assert!(e.contains("nest more than 8 levels deep"), "{e}");
+    let graph =
+        Document::parse(r#"(format: 1, nodes: [(id: "part", type: "graph", path: "part.ron")])"#)
+            .unwrap()
+            .graph()
+            .clone();
+    let e = export_ghx(&graph, &registry).unwrap_err().to_string();
+    assert!(
+        e.starts_with("node \"part\": its sub-graph is the file \"part.ron\""),
+        "{e}"
+    );
+}
