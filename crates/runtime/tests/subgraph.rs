@@ -441,3 +441,33 @@ fn sub_graph_nodes_need_exactly_one_body() {
         d[0]
     );
 }
+
+/// A sub-graph whose body does not check, followed by nodes wired to each other, is an error
+/// naming the inner fault, not a panic: its node has no type, so the including graph has no
+/// plan (found by the cluster round-trip property test of `locus-ghx`).
+#[test]
+fn a_failing_sub_graph_before_wired_nodes_is_an_error_not_a_panic() {
+    let text = r#"(
+        format: 1,
+        nodes: [
+            (id: "x", type: "test.number", values: {"N": [2, -1]}),
+            (id: "bad", type: "graph", graph: (
+                format: 1,
+                nodes: [
+                    (id: "add", type: "test.addition"),
+                ],
+                inputs: {"a": "add.B"},
+                outputs: {"r": "add.R"},
+            )),
+            (id: "m", type: "test.multiplication", values: {"B": 5}),
+            (id: "n", type: "test.addition", values: {"B": -4}),
+        ],
+        wires: [("x.N", "bad.a"), ("x.N", "m.A"), ("m.R", "n.A")],
+        outputs: {"y": "n.R"},
+    )"#;
+    let errors: Vec<String> = check_errors(text).iter().map(ToString::to_string).collect();
+    assert_eq!(
+        errors,
+        ["8:26: error: input \"A\" of node \"bad/add\" has no wire, no value and no default"],
+    );
+}

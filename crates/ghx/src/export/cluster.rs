@@ -244,13 +244,32 @@ pub(super) fn cluster(
 }
 
 /// The value a port of a graph has when nothing is wired into it: the node's value for it, or
-/// the port's default.
+/// the port's default; for a sub-graph node's input, the value of the inner port it sets.
 fn inner_value(
     graph: &Graph,
     port: &PortRef,
     registry: &NodeRegistry,
 ) -> Option<locus_runtime::Literal> {
+    inner_value_at(graph, port, registry, 0)
+}
+
+fn inner_value_at(
+    graph: &Graph,
+    port: &PortRef,
+    registry: &NodeRegistry,
+    depth: usize,
+) -> Option<locus_runtime::Literal> {
     let node = graph.nodes.iter().find(|n| n.id == port.node)?;
+    if let Some(SubGraph::Inline(inner)) = &node.subgraph {
+        if let Some((_, v)) = node.values.iter().find(|(k, _)| k == &port.port) {
+            return Some(v.clone());
+        }
+        let input = inner.inputs.iter().find(|i| i.name == port.port)?;
+        if depth >= crate::Limits::default().max_cluster_depth {
+            return None;
+        }
+        return inner_value_at(inner, &input.target, registry, depth + 1);
+    }
     let node_type = registry.get(&node.node_type)?;
     let inputs = node_type.resolve_inputs(node.input_names.as_deref());
     let p = inputs.iter().find(|p| p.is_named(&port.port))?;

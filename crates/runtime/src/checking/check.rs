@@ -187,7 +187,10 @@ impl<'a> Checker<'a> {
         self.cycles();
         let mut diagnostics = std::mem::take(&mut self.diagnostics);
         diagnostics.sort_by_key(|d| d.location.map_or(usize::MAX, |l| l.offset));
-        if diagnostics.iter().any(Diagnostic::is_error) {
+        // A sub-graph node whose body did not check has no type: its errors are the
+        // including check's (`checking/subgraph.rs`), and there is no plan to make without it.
+        if diagnostics.iter().any(Diagnostic::is_error) || self.resolved.iter().any(Option::is_none)
+        {
             return Err(diagnostics);
         }
         let (graph, doc) = (self.graph, self.doc);
