@@ -281,3 +281,52 @@ fn too_deep_or_unread_sub_graphs_are_export_errors() {
         "{e}"
     );
 }
+
+/// A sub-graph node's input modifiers are its cluster's, and a modifier on the Data parameter
+/// that gives a sub-graph's output is its Cluster Output's: both come back, and the graph
+/// computes the same tree.
+#[test]
+fn a_clusters_modifiers_round_trip() {
+    let registry = registry();
+    let text = r#"(
+        format: 1,
+        nodes: [
+            (id: "n", type: "params.number", values: {"Num": [1, 2, 3]}),
+            (id: "twice", type: "graph",
+                modifiers: {"x": [reverse]},
+                graph: (
+                    format: 1,
+                    nodes: [
+                        (id: "double", type: "maths.multiplication", values: {"B": 2}),
+                        (id: "y", type: "params.data", output_modifiers: {"Data": [graft]}),
+                    ],
+                    wires: [("double.R", "y.Data")],
+                    inputs: {"x": "double.A"},
+                    outputs: {"y": "y.Data"},
+                )),
+        ],
+        wires: [("n.Num", "twice.x")],
+        outputs: {"y": "twice.y"},
+    )"#;
+    let original = Document::parse(text).unwrap().graph().clone();
+    let (ghx, warnings) = export_ghx(&original, &registry).unwrap();
+    assert!(warnings.is_empty(), "{warnings:?}");
+    let back = import(ghx.as_bytes(), &registry, &Limits::default()).unwrap();
+    let node = back.graph.nodes.iter().find(|n| n.id.0 == "twice").unwrap();
+    assert_eq!(node.modifiers, original.nodes[1].modifiers);
+    let graft = |g: &locus_runtime::Graph| {
+        let tree = |g: &locus_runtime::Graph| {
+            let checked = locus_runtime::check(g, &registry).unwrap();
+            let mut e = locus_runtime::Evaluator::new(checked.plan);
+            e.evaluate();
+            e.output("y").map(|t| format!("{t:?}")).unwrap_or_default()
+        };
+        tree(g)
+    };
+    let expected = graft(&original);
+    assert!(
+        expected.contains("[0, 2]") || expected.contains("0;2"),
+        "{expected}"
+    );
+    assert_eq!(graft(&back.graph), expected);
+}

@@ -369,9 +369,25 @@ impl Mapper<'_> {
             inner_map
                 .nodes_by_object
                 .insert(boundary.instance.clone(), node.clone());
+            // The boundary object's own modifiers (a Cluster Output that grafts).
+            let mut modifiers = Vec::new();
+            if let Some(p) = boundary.inputs.first() {
+                let mods = inner_map.modifiers(
+                    &object_ref(boundary, &path),
+                    &node,
+                    p,
+                    "Data",
+                    DataType::Generic,
+                    true,
+                );
+                if !mods.is_empty() {
+                    modifiers.push(("Data".to_owned(), mods));
+                }
+            }
             inner_map.graph.nodes.push(GraphNode {
                 id: node.clone(),
                 node_type: "params.data".to_owned(),
+                modifiers,
                 ..GraphNode::default()
             });
             inner_map.notes.push((
@@ -418,7 +434,23 @@ impl Mapper<'_> {
         };
         inner_map.objects(&rest, &path, depth + 1);
         inner_map.wire();
-        let mapped = inner_map.finish();
+        let mut mapped = inner_map.finish();
+        // The runtime has no output modifiers on sub-graph nodes: a cluster output's apply to
+        // the data its Cluster Output gives, as the output modifiers of that Data parameter.
+        for (outer, name) in o.outputs.iter().zip(&out_names) {
+            let mods = self.modifiers(&r, &id, outer, name, DataType::Generic, false);
+            let source = mapped
+                .graph
+                .outputs
+                .iter()
+                .find(|x| &x.name == name)
+                .map(|x| x.source.node.clone());
+            if let (false, Some(source)) = (mods.is_empty(), source)
+                && let Some(n) = mapped.graph.nodes.iter_mut().find(|n| n.id == source)
+            {
+                n.output_modifiers.push(("Data".to_owned(), mods));
+            }
+        }
         self.notes.extend(
             mapped
                 .notes
