@@ -138,7 +138,8 @@
 //! them as one loop over the typed columns (the gates, the Vector › Point, Vector and Plane
 //! item nodes, Inverse Transform, Line, Circle, Length, Sphere, Cylinder, Plane Surface). Nodes
 //! with several outputs or per-item warnings use `lift1_with`/`lift2_with`/`lift3_with` (the
-//! comparisons, Vector 2Pt, Vector XYZ, the Deconstruct nodes), and Move and Rotate a typed
+//! comparisons, Vector 2Pt, Vector XYZ, the Deconstruct nodes; Distance too, for the loop
+//! without reports of `lift2_with_plain`), and Move and Rotate a typed
 //! fast path for points (`fast_path2_with`/`fast_path3_with`). Nodes with settings, list
 //! access or other Generic data keep the general solve function, called once per item
 //! through `Solve`.

@@ -3,7 +3,9 @@
 //! outputs, nulls, and messages with path and index) on long branches, several chunks of the
 //! loop long, with items that are not clean in random places (one here and there, or most of
 //! them), with the second input a full branch, one item or a shorter branch, on one and two
-//! threads, and with either output or both read.
+//! threads, and with either output or both read; and for nodes of one output and of three,
+//! with any set of the three read (the pass writes one output, all of them, or some of
+//! several in different ways).
 
 use locus_runtime::{
     Branch, DataTree, DataType, Evaluator, ItemReport, NodeError, NodeRegistry, NodeType, Port,
@@ -232,5 +234,96 @@ proptest! {
             (trees, messages)
         };
         prop_assert_eq!(run("t.plain1"), run("t.reporting"));
+    }
+}
+
+/// `sum_and_order` with a third output, the product (-2 where it is NaN).
+fn sum_order_product(
+    a: &f64,
+    b: &f64,
+    report: &mut ItemReport,
+) -> Result<(f64, bool, f64), NodeError> {
+    sum_and_order(a, b, report).map(|(s, l)| (s, l, product(a, b)))
+}
+
+/// `a * b`, or -2 where that is NaN (which would compare unequal to itself in the test).
+fn product(a: &f64, b: &f64) -> f64 {
+    let p = a * b;
+    if p.is_nan() { -2.0 } else { p }
+}
+
+/// One output, the sum: as `sum_and_order`, but a NaN input fails the item.
+fn sum_only(a: &f64, b: &f64, report: &mut ItemReport) -> Result<(f64,), NodeError> {
+    if (a + b).is_nan() {
+        return Err(NodeError("an input is NaN".into()));
+    }
+    sum_and_order(a, b, report).map(|(s, _)| (s,))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    #[test]
+    fn the_plain_loop_agrees_with_the_reporting_loop_for_one_and_three_outputs(
+        n in 1usize..5_000,
+        dirty in prop::collection::vec(any::<usize>(), 0..6),
+        dense in prop_oneof![4 => Just(0.0), 1 => Just(0.002), 1 => Just(0.6), 1 => Just(1.0)],
+        seed: u64,
+        single_b: bool,
+        threads in 1usize..3,
+        // Which of the three outputs are read (bits), every set but the empty one.
+        read in 1u32..8,
+    ) {
+        let three = |id: &str| {
+            node(id, false).output(Port::new("Product", "P", DataType::Number))
+        };
+        let one = |id: &str| {
+            NodeType::new(id, "Sum", "S", "Test")
+                .input(Port::new("A", "A", DataType::Number))
+                .input(Port::new("B", "B", DataType::Number))
+                .output(Port::new("Sum", "R", DataType::Number))
+        };
+        let mut registry = NodeRegistry::new();
+        registry.register(three("t.reporting3").lift2_with(sum_order_product));
+        registry.register(three("t.plain3").lift2_with_plain(
+            clean,
+            |a: &f64, b: &f64| (a + b, a > b, product(a, b)),
+            sum_order_product,
+        ));
+        registry.register(one("t.reporting1").lift2_with(sum_only));
+        registry.register(one("t.plain1").lift2_with_plain(
+            clean,
+            |a: &f64, b: &f64| (a + b,),
+            sum_only,
+        ));
+        let tree = |branch: Branch| {
+            let mut t = DataTree::new();
+            t.insert(TreePath::zero(), branch);
+            t
+        };
+        let a = tree(numbers(n, &dirty, dense, seed));
+        let b = tree(numbers(if single_b { 1 } else { n }, &[], 0.0, seed ^ 0x9e37));
+        let run = |node_type: &str, read: u32| {
+            let outputs: Vec<String> = ["R", "L", "P"]
+                .iter()
+                .enumerate()
+                .filter(|&(k, _)| read & (1 << k) != 0)
+                .map(|(_, o)| format!(r#""{}": "n.{o}""#, o.to_lowercase()))
+                .collect();
+            let text = format!(
+                r#"(format: 1, nodes: [(id: "n", type: "{node_type}")],
+                       inputs: {{"a": "n.A", "b": "n.B"}}, outputs: {{{}}})"#,
+                outputs.join(", ")
+            );
+            let mut e = Evaluator::from_text(&text, &registry).unwrap();
+            e.set_threads(threads).unwrap();
+            e.set_input("a", a.clone()).unwrap();
+            e.set_input("b", b.clone()).unwrap();
+            e.evaluate();
+            let trees: Vec<DataTree> = e.outputs().map(|(_, tree)| tree.clone()).collect();
+            let messages: Vec<String> = e.messages().map(ToString::to_string).collect();
+            (trees, messages)
+        };
+        prop_assert_eq!(run("t.plain3", read), run("t.reporting3", read));
+        prop_assert_eq!(run("t.plain1", 1), run("t.reporting1", 1));
     }
 }

@@ -110,11 +110,18 @@ pub fn distance() -> NodeType {
             Port::new("Distance", "D", DataType::Number)
                 .doc("The distance from A to B, in model units; never negative."),
         )
-        .lift2(|a: &Point3, b: &Point3| {
-            let a = finite_point(*a, "point A")?;
-            let b = finite_point(*b, "point B")?;
-            Ok(a.distance(b))
-        })
+        .lift2_with_plain(
+            // Finite points give a finite distance, or one that overflows (a case the
+            // reporting function then takes, with the same result); a NaN or infinite
+            // coordinate gives a NaN or infinite one. One check, nothing to report.
+            |a: &Point3, b: &Point3| a.distance(*b).is_finite(),
+            |a: &Point3, b: &Point3| (a.distance(*b),),
+            |a: &Point3, b: &Point3, _| {
+                let a = finite_point(*a, "point A")?;
+                let b = finite_point(*b, "point B")?;
+                Ok((a.distance(b),))
+            },
+        )
 }
 
 /// Point Between: the point at parameter `t` on the way from A to B, `A + t (B − A)`.

@@ -77,14 +77,15 @@ pub trait Outputs: Sized + Send + 'static {
     /// Truncates the wanted outputs' columns to `len` items.
     fn truncate(columns: &mut Self::Columns, len: usize);
     /// Appends the outputs of `item(j)` for `j` in `0..n` (each with whether its item was
-    /// clean) to the wanted outputs' columns, which hold `start` items, in one pass; whether
-    /// all were clean. Each column is first filled out to `start + n`
-    /// items with placeholders, which the pass overwrites by index (so it neither grows a
-    /// vector nor checks an index per item, and vectorises where the items allow). The caller
-    /// truncates the columns to `start` again when the chunk is not kept.
+    /// clean) to the wanted outputs' columns in one pass; whether all were clean. When one
+    /// output is wanted, or all of them and they are 16 bytes an item or more, the columns are
+    /// extended from an exact-size iterator (alone, or as a tuple as `Iterator::unzip` does),
+    /// which writes each item once and checks no capacity per item. Otherwise each wanted
+    /// column is first filled out with placeholders for the chunk, which the pass then
+    /// overwrites by index (a pass that vectorises for narrow items). The caller
+    /// truncates the columns to their length before the call when the chunk is not kept.
     fn write_chunk<I: Fn(usize) -> (Self, bool)>(
         columns: &mut Self::Columns,
-        start: usize,
         n: usize,
         item: I,
     ) -> bool;
@@ -93,7 +94,6 @@ pub trait Outputs: Sized + Send + 'static {
     #[doc(hidden)]
     fn write_wanted<const W: u32, I: Fn(usize) -> (Self, bool)>(
         columns: &mut Self::Columns,
-        start: usize,
         n: usize,
         item: I,
     ) -> bool;
@@ -131,34 +131,62 @@ macro_rules! outputs {
             #[inline(always)]
             fn write_chunk<I: Fn(usize) -> (Self, bool)>(
                 columns: &mut Self::Columns,
-                start: usize,
                 n: usize,
                 item: I,
             ) -> bool {
                 let mut wanted = 0;
-                $(if let Some(v) = &mut columns.$i {
-                    v.resize(start + n, $t::placeholder());
+                $(if columns.$i.is_some() {
                     wanted |= 1 << $i;
                 })*
                 match wanted {
-                    $($w => Self::write_wanted::<$w, I>(columns, start, n, item),)*
+                    $($w => Self::write_wanted::<$w, I>(columns, n, item),)*
                     _ => unreachable!("a set of {} outputs", wanted),
                 }
             }
             #[inline(always)]
             fn write_wanted<const W: u32, I: Fn(usize) -> (Self, bool)>(
                 columns: &mut Self::Columns,
-                start: usize,
                 n: usize,
                 item: I,
             ) -> bool {
+                let mut clean = true;
+                // One output: `Vec::extend` from a range's map writes each item in place.
+                $(if W == 1 << $i {
+                    if let Some(v) = &mut columns.$i {
+                        v.extend((0..n).map(|j| {
+                            let (o, ok) = item(j);
+                            clean &= ok;
+                            o.$i
+                        }));
+                    }
+                    return clean;
+                })*
+                // Every output, of 16 bytes an item or more: the tuple of columns extended
+                // from the same exact-size iterator (as `Iterator::unzip` does), which writes
+                // each item in place. Narrower outputs (booleans, say) take the pass by index
+                // below, which vectorises, and whose placeholders cost little.
+                if W == 0 $(| (1 << $i))* && std::mem::size_of::<Self>() >= 16 {
+                    let mut all = ($(columns.$i.take().unwrap_or_default(),)*);
+                    all.extend((0..n).map(|j| {
+                        let (o, ok) = item(j);
+                        clean &= ok;
+                        o
+                    }));
+                    $(columns.$i = Some(all.$i);)*
+                    return clean;
+                }
+                // Some of several: each wanted column filled out with placeholders for the
+                // chunk, which the pass overwrites by index (no index check per item).
                 $(let $d: &mut [$t] = match &mut columns.$i {
-                    Some(v) if W & (1 << $i) != 0 => &mut v[start..start + n],
+                    Some(v) if W & (1 << $i) != 0 => {
+                        let start = v.len();
+                        v.resize(start + n, $t::placeholder());
+                        &mut v[start..]
+                    }
                     _ => &mut [],
                 };
                 // Known to the compiler from here on: no index check in the pass.
                 assert!(W & (1 << $i) == 0 || $d.len() == n);)*
-                let mut clean = true;
                 for j in 0..n {
                     let (o, ok) = item(j);
                     clean &= ok;

@@ -18,10 +18,9 @@ use super::{
 use crate::evaluation::lift::{Full, Lift, LiftOutput, One, Repeat, Src, items};
 use crate::{Item, NodeError, NodeType};
 
-/// How many items the plain pass runs before it looks at the chunk's flag: small enough that
-/// the chunk's output columns, filled out with placeholders before the pass overwrites them
-/// (see [`Outputs::write_chunk`]), are still in the L1 cache, and that a chunk that is not
-/// clean is cheap to run again; large enough that the look costs nothing.
+/// How many items the plain pass runs before it looks at the chunk's flag: small enough that a
+/// chunk that is not clean is cheap to run again (its outputs are still in the cache when they
+/// are truncated off), large enough that the look costs nothing.
 const CLEAN_CHUNK: usize = 1024;
 
 /// The plain loop over `count` iterations; `tuples(start, end)` gives the input tuple of
@@ -48,7 +47,7 @@ fn plain_loop<T: Copy, O: Outputs, I: Fn(usize) -> T>(
     while start < count {
         let end = (start + CLEAN_CHUNK).min(count);
         let at = tuples(start, end);
-        let ok = O::write_chunk(&mut all.columns, start, end - start, |j| {
+        let ok = O::write_chunk(&mut all.columns, end - start, |j| {
             let t = at(j);
             (plain(t), clean(t))
         });
