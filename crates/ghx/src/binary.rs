@@ -375,8 +375,9 @@ pub fn write_compressed(root: &Chunk) -> Vec<u8> {
     e.finish().unwrap_or_default()
 }
 
-fn write_string(out: &mut Vec<u8>, s: &str) {
-    // .NET's 7-bit encoded length, then UTF-8.
+/// A string as .NET's `BinaryWriter` writes it (and MS-NRBF's `LengthPrefixedString`): the
+/// UTF-8 length in 7-bit groups, low group first, then the bytes.
+pub(crate) fn write_string(out: &mut Vec<u8>, s: &str) {
     let mut n = s.len();
     loop {
         let b = (n & 0x7f) as u8;

@@ -211,14 +211,14 @@ fn nrbf_stream(class: &str, versions: Versions, data: &[u8]) -> Vec<u8> {
     // BinaryLibrary.
     s.push(0x0C);
     int(&mut s, LIBRARY_ID);
-    prefixed_string(&mut s, RHINOCOMMON_LIBRARY);
+    crate::binary::write_string(&mut s, RHINOCOMMON_LIBRARY);
     // ClassWithMembersAndTypes: three Int32 members and a Byte[].
     s.push(0x05);
     int(&mut s, OBJECT_ID);
-    prefixed_string(&mut s, class);
+    crate::binary::write_string(&mut s, class);
     int(&mut s, 4);
     for name in ["version", "archive3dm", "opennurbs", "data"] {
-        prefixed_string(&mut s, name);
+        crate::binary::write_string(&mut s, name);
     }
     // BinaryTypeEnumeration: Primitive ×3, PrimitiveArray; then Int32 ×3, Byte.
     s.extend_from_slice(&[0, 0, 0, 7, 8, 8, 8, PRIMITIVE_BYTE]);
@@ -236,21 +236,6 @@ fn nrbf_stream(class: &str, versions: Versions, data: &[u8]) -> Vec<u8> {
     s.extend_from_slice(data);
     s.push(RECORD_MESSAGE_END);
     s
-}
-
-/// A `LengthPrefixedString`: the UTF-8 length in 7-bit groups, then the bytes.
-fn prefixed_string(s: &mut Vec<u8>, text: &str) {
-    let mut n = text.len();
-    loop {
-        let low = (n & 0x7F) as u8;
-        n >>= 7;
-        if n == 0 {
-            s.push(low);
-            break;
-        }
-        s.push(low | 0x80);
-    }
-    s.extend_from_slice(text.as_bytes());
 }
 
 #[cfg(test)]
@@ -406,7 +391,7 @@ mod tests {
     #[test]
     fn lengths_are_written_in_seven_bit_groups() {
         let mut s = Vec::new();
-        prefixed_string(&mut s, &"a".repeat(200));
+        crate::binary::write_string(&mut s, &"a".repeat(200));
         assert_eq!(&s[..2], &[0xC8, 0x01]);
         assert_eq!(s.len(), 202);
     }
